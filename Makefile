@@ -1,0 +1,42 @@
+# Quick start: `make run` (install what is missing, build, run the flagship demo), `make test`.
+BUILD      := build/release
+NCKIT      := $(BUILD)/src/nckit
+DEMO       := examples/01_mill_pocket.ngc
+JOBS       ?= 2
+
+.PHONY: all deps configure build run test test-unit test-asan bench clean
+
+all: build
+
+deps:
+	@bash scripts/deps.sh
+
+configure: deps
+	@cmake --preset release >/dev/null
+
+build: configure
+	@cmake --build --preset release -j $(JOBS)
+
+run: build
+	@echo "== nckit moves $(DEMO) --summary"
+	@$(NCKIT) moves $(DEMO) --summary
+	@echo "== first moves"
+	@$(NCKIT) moves $(DEMO) | head -n 12
+
+test: build
+	@ctest --preset release
+
+test-unit: build
+	@ctest --preset release -L unit
+
+# The unit tests again under AddressSanitizer and UndefinedBehaviorSanitizer.
+test-asan: deps
+	@cmake --preset asan >/dev/null
+	@cmake --build --preset asan -j $(JOBS)
+	@ctest --preset asan
+
+bench: build
+	@bash bench/run_all.sh
+
+clean:
+	@rm -rf build

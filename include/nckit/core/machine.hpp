@@ -1,0 +1,64 @@
+#pragma once
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "nckit/core/axes.hpp"
+#include "nckit/core/result.hpp"
+
+namespace nckit {
+
+enum class AxisKind { linear, rotary };
+
+//! How a number without a decimal point in an axis word is read.
+enum class DecimalPointInput {
+    calculator,      //!< `X10` is 10 mm (Fanuc parameter DPI = 1; LinuxCNC's only reading)
+    least_increment  //!< `X10` is 10 least input increments: 0.010 mm (Fanuc's default)
+};
+
+enum class ProfileKind { scurve, trapezoid };
+
+struct AxisConfig {
+    Axis axis = Axis::X;
+    AxisKind kind = AxisKind::linear;
+    double max_velocity = 0;      //!< mm/s (deg/s for rotary)
+    double max_acceleration = 0;  //!< mm/s^2 (deg/s^2)
+    double max_jerk = 0;          //!< mm/s^3 (deg/s^3)
+    double min = 0;               //!< travel limit, machine coordinates, mm (deg)
+    double max = 0;               //!< travel limit, machine coordinates, mm (deg)
+    double steps_per_unit = 0;    //!< motor steps per mm (deg)
+    double backlash = 0;          //!< mm (deg) lost on each reversal
+    double home = 0;              //!< reference point G28 returns to, machine coordinates
+};
+
+struct SpindleConfig {
+    double max_rpm = 0;       //!< rpm
+    int encoder_counts = 0;   //!< counts per spindle turn
+};
+
+struct MachineConfig {
+    std::string name;
+    double servo_period_s = 0.001;  //!< s, trajectory sampling period
+    bool diameter_mode = false;     //!< lathe: X words are diameters, Moves carry radii
+    std::vector<int> exact_stop_mcodes;  //!< M-codes that need the axes at rest
+    DecimalPointInput decimal_point_input = DecimalPointInput::calculator;
+    ProfileKind profile = ProfileKind::scurve;
+    std::vector<AxisConfig> axes;   //!< in the order the config lists them
+    SpindleConfig spindle;
+
+    //! The configured axis, or null when the machine has no such axis.
+    [[nodiscard]] const AxisConfig* find(Axis axis) const;
+    [[nodiscard]] AxisSet axis_set() const;
+    [[nodiscard]] bool is_exact_stop_mcode(int code) const;
+};
+
+//! The built-in 3-axis mill used when no `--machine` is given.
+[[nodiscard]] MachineConfig default_mill();
+
+//! Parses and validates a machine config; every error carries FILE:LINE:COL.
+[[nodiscard]] Result<MachineConfig> parse_machine_config(std::string_view toml_text,
+                                                         const std::string& file_name);
+[[nodiscard]] Result<MachineConfig> load_machine_config(const std::filesystem::path& path);
+
+}  // namespace nckit
