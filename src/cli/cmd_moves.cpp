@@ -1,1 +1,84 @@
-// placeholder
+// nckit moves FILE: the interpreter's move stream, one line per move, as text or JSON lines.
+#include <cstdio>
+#include <variant>
+
+#include <fmt/format.h>
+
+#include "common.hpp"
+#include "nckit/interp/move_format.hpp"
+#include "nckit/interp/move_summary.hpp"
+#include "verbs.hpp"
+
+namespace nckit::cli {
+
+namespace {
+
+struct MovesOptions {
+    std::string program;
+    std::string machine;
+    bool json = false;
+    bool summary = false;
+};
+
+void print_summary(const MoveSummary& s, const MachineConfig& machine) {
+    fmt::print("moves: {} rapid, {} linear, {} arc, {} sync, {} dwell, {} io\n", s.rapids, s.lines,
+               s.arcs, s.syncs, s.dwells, s.ios);
+    fmt::print("cutting length: {:.3f} mm, rapid length: {:.3f} mm\n", s.cutting_length_mm, s.rapid_length_mm);
+    fmt::print("time at programmed feed: {:.3f} s, dwell: {:.3f} s\n", s.feed_time_s, s.dwell_s);
+    if (!s.any_motion) return;
+    for (const AxisConfig& axis : machine.axes) {
+        const char* unit = axis.kind == AxisKind::rotary ? "deg" : "mm";
+        fmt::print("{} range: {:.4f} .. {:.4f} {}\n", letter(axis.axis), s.low[axis.axis], s.high[axis.axis], unit);
+    }
+}
+
+int run_moves(const MovesOptions& options) {
+    auto interpreter = open_program_or_report(options.program, options.machine);
+    if (!interpreter) return exit_bad_input;
+    const MachineConfig& machine = interpreter->machine();
+    std::string buffer;
+    buffer.reserve(1 << 17);
+    MoveSummary summary;
+    auto flush = [&] {
+        std::fwrite(buffer.data(), 1, buffer.size(), stdout);
+        buffer.clear();
+    };
+    for (;;) {
+        InterpResult result = interpreter->next();
+        if (std::holds_alternative<ProgramEnd>(result)) break;
+        if (const auto* diagnostic = std::get_if<Diagnostic>(&result)) {
+            flush();
+            print_diagnostic(*diagnostic);
+            return exit_bad_input;
+        }
+        const Move& move = std::get<Move>(result);
+        if (options.summary) {
+            summary.add(move);
+            continue;
+        }
+        if (options.json) {
+            append_move_json(buffer, move, machine);
+        } else {
+            append_move_text(buffer, move, machine);
+        }
+        buffer += '\n';
+        if (buffer.size() > (1 << 16)) flush();
+    }
+    flush();
+    if (options.summary) print_summary(summary, machine);
+    return 0;
+}
+
+}  // namespace
+
+void add_moves_verb(CLI::App& app, int& exit_status) {
+    auto options = std::make_shared<MovesOptions>();
+    CLI::App* verb = app.add_subcommand("moves", "Print the moves a program makes, in machine coordinates");
+    verb->add_option("FILE", options->program, "NC program")->required();
+    verb->add_option("--machine", options->machine, "machine config (TOML); default: built-in 3-axis mill");
+    verb->add_flag("--json", options->json, "one JSON object per line");
+    verb->add_flag("--summary", options->summary, "totals instead of the moves");
+    verb->callback([options, &exit_status] { exit_status = run_moves(*options); });
+}
+
+}  // namespace nckit::cli

@@ -1,1 +1,22 @@
-int main() { return 0; }
+// nckit: the command line. Each verb lives in its own cmd_*.cpp; this file only dispatches.
+#include <CLI/CLI.hpp>
+
+#include "common.hpp"
+#include "verbs.hpp"
+
+int main(int argc, char** argv) {
+    CLI::App app{"nckit: CNC motion kernel and toolkit"};
+    app.require_subcommand(1);
+    app.set_version_flag("--version", "nckit 0.1.0");
+    int exit_status = 0;
+    nckit::cli::add_moves_verb(app, exit_status);
+    nckit::cli::add_check_verb(app, exit_status);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        int status = app.exit(e);
+        // Help and version are successes; a wrong command line is bad input like a bad program.
+        return status == 0 ? 0 : nckit::cli::exit_bad_input;
+    }
+    return exit_status;
+}

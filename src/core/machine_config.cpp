@@ -1,1 +1,298 @@
-// placeholder
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cerrno>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <system_error>
+#include <tuple>
+
+#include <fmt/format.h>
+#include <toml++/toml.h>
+
+#include "nckit/core/machine.hpp"
+#include "toml_table_reader.hpp"
+
+namespace nckit {
+
+namespace {
+
+using detail::ConfigSink;
+using detail::Need;
+using detail::Sign;
+using detail::TableReader;
+
+//! One [[axis]] as read: the config, plus what the cross-axis checks need even when the
+//! table had errors of its own (a duplicate is worth reporting alongside a bad limit).
+struct AxisEntry {
+    AxisConfig config;
+    bool named = false;  //!< `name` was a valid axis letter; config.axis holds it
+    bool valid = false;  //!< the table produced no diagnostics
+    toml::source_region name_region;
+};
+
+std::string lower_first(std::string text) {
+    if (text.empty()) return text;
+    text[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(text[0])));
+    return text;
+}
+
+bool read_into(TableReader& reader, std::string_view key, Need need, Sign sign, double& out) {
+    const std::optional<double> value = reader.number(key, need, sign);
+    if (value) out = *value;
+    return value.has_value();
+}
+
+void read_exact_stop_mcodes(TableReader& reader, MachineConfig& config, ConfigSink& sink) {
+    const toml::array* codes = reader.array("exact_stop_mcodes", Need::optional);
+    if (codes == nullptr) return;
+    for (const toml::node& code : *codes) {
+        const std::optional<int> value =
+            detail::to_int(code, "each entry of 'exact_stop_mcodes'", Sign::non_negative, sink);
+        if (value) config.exact_stop_mcodes.push_back(*value);
+    }
+}
+
+void read_machine(const toml::table& table, MachineConfig& config, ConfigSink& sink) {
+    TableReader reader(table, "[machine]", sink);
+    if (std::optional<std::string> name = reader.text("name", Need::required)) {
+        // Reports and plots title themselves with it; an empty title is a config slip.
+        if (name->empty()) {
+            sink.error(reader.region_of("name"), "config-value", "'name' must not be empty");
+        }
+        config.name = std::move(*name);
+    }
+    // Optional: 1 ms is the servo period nearly every controller (LinuxCNC included) runs.
+    read_into(reader, "servo_period_s", Need::optional, Sign::positive, config.servo_period_s);
+    if (std::optional<bool> diameter = reader.flag("diameter_mode", Need::optional)) {
+        config.diameter_mode = *diameter;
+    }
+    read_exact_stop_mcodes(reader, config, sink);
+
+    // Each list of names sits beside the enum values it maps to, in the same order.
+    constexpr std::array decimal_point_modes{DecimalPointInput::calculator,
+                                             DecimalPointInput::least_increment};
+    if (auto i = reader.choice("decimal_point_input", Need::optional, "decimal_point_input",
+                               {"calculator", "least_increment"})) {
+        config.decimal_point_input = decimal_point_modes[*i];
+    }
+    constexpr std::array profiles{ProfileKind::scurve, ProfileKind::trapezoid};
+    if (auto i = reader.choice("profile", Need::optional, "profile", {"scurve", "trapezoid"})) {
+        config.profile = profiles[*i];
+    }
+    reader.reject_unknown_keys();
+}
+
+// Limits end up as divisors (time = distance / velocity, steps = mm * steps_per_unit), so zero
+// is an error here rather than a silent "unlimited" or a division by zero in the planner.
+void read_limits(TableReader& reader, AxisConfig& axis) {
+    read_into(reader, "max_velocity", Need::required, Sign::positive, axis.max_velocity);
+    read_into(reader, "max_acceleration", Need::required, Sign::positive, axis.max_acceleration);
+    read_into(reader, "max_jerk", Need::required, Sign::positive, axis.max_jerk);
+    read_into(reader, "steps_per_unit", Need::required, Sign::positive, axis.steps_per_unit);
+    read_into(reader, "backlash", Need::optional, Sign::non_negative, axis.backlash);
+}
+
+void read_travel(TableReader& reader, AxisConfig& axis, ConfigSink& sink) {
+    const bool have_min = read_into(reader, "min", Need::required, Sign::any, axis.min);
+    const bool have_max = read_into(reader, "max", Need::required, Sign::any, axis.max);
+    const bool have_home = read_into(reader, "home", Need::optional, Sign::any, axis.home);
+    if (!have_min || !have_max) return;
+    if (axis.min >= axis.max) {
+        sink.error(reader.region_of("max"), "config-value",
+                   fmt::format("'max' ({}) must be greater than 'min' ({})", axis.max, axis.min));
+        return;
+    }
+    if (axis.home >= axis.min && axis.home <= axis.max) return;
+    if (have_home) {
+        sink.error(reader.region_of("home"), "config-value",
+                   fmt::format("'home' ({}) must lie within min..max ({}..{})", axis.home,
+                               axis.min, axis.max));
+    } else if (!reader.has("home")) {
+        // G28 would drive to the default 0 beyond the travel; make the user choose a home.
+        sink.error(reader.region(), "config-value",
+                   fmt::format("'home' defaults to 0, which lies outside min..max ({}..{}): set it",
+                               axis.min, axis.max));
+    }
+}
+
+AxisEntry read_axis(const toml::table& table, ConfigSink& sink) {
+    const std::size_t errors_before = sink.diagnostics.size();
+    TableReader reader(table, "[[axis]]", sink);
+    AxisEntry entry;
+    static_assert(axis_letters == "XYZABCUVW", "the name choices below follow Axis's order");
+    if (auto i = reader.choice("name", Need::required, "axis",
+                               {"X", "Y", "Z", "A", "B", "C", "U", "V", "W"})) {
+        entry.config.axis = static_cast<Axis>(*i);
+        entry.named = true;
+        entry.name_region = reader.region_of("name");
+    }
+    constexpr std::array kinds{AxisKind::linear, AxisKind::rotary};
+    if (auto i = reader.choice("kind", Need::required, "kind", {"linear", "rotary"})) {
+        entry.config.kind = kinds[*i];
+    }
+    read_limits(reader, entry.config);
+    read_travel(reader, entry.config, sink);
+    reader.reject_unknown_keys();
+    entry.valid = sink.diagnostics.size() == errors_before;
+    return entry;
+}
+
+void read_axes(TableReader& root, MachineConfig& config, ConfigSink& sink) {
+    const toml::node* node = root.node("axis", Need::optional);
+    if (node == nullptr) {
+        sink.error(root.region(), "config-no-axes", "at least one [[axis]] is required");
+        return;
+    }
+    const toml::array* tables = node->as_array();
+    if (tables == nullptr) {
+        sink.error(node->source(), "config-type",
+                   fmt::format("'axis' must be an array of tables ([[axis]]), not {}",
+                               detail::type_name(node->type())));
+        return;
+    }
+    if (tables->empty()) {
+        sink.error(node->source(), "config-no-axes", "at least one [[axis]] is required");
+        return;
+    }
+    std::array<std::optional<std::uint32_t>, axis_count> first_line{};  // where each axis was named
+    for (const toml::node& element : *tables) {
+        const toml::table* table = element.as_table();
+        if (table == nullptr) {
+            sink.error(element.source(), "config-type",
+                       fmt::format("each [[axis]] must be a table, not {}",
+                                   detail::type_name(element.type())));
+            continue;
+        }
+        AxisEntry entry = read_axis(*table, sink);
+        if (entry.named) {
+            std::optional<std::uint32_t>& first = first_line[index(entry.config.axis)];
+            if (first) {
+                sink.error(entry.name_region, "config-duplicate-axis",
+                           fmt::format("axis '{}' is listed twice (first at line {})",
+                                       letter(entry.config.axis), *first));
+            } else {
+                first = entry.name_region.begin.line;
+            }
+        }
+        if (entry.valid) config.axes.push_back(entry.config);
+    }
+}
+
+void read_spindle(const toml::table& table, MachineConfig& config, ConfigSink& sink) {
+    TableReader reader(table, "[spindle]", sink);
+    read_into(reader, "max_rpm", Need::optional, Sign::positive, config.spindle.max_rpm);
+    if (auto counts = reader.integer("encoder_counts", Need::optional, Sign::positive)) {
+        config.spindle.encoder_counts = *counts;
+    }
+    reader.reject_unknown_keys();
+}
+
+//! The table under a top-level key, or null (reported when it is present but not a table).
+const toml::table* section(TableReader& root, std::string_view key, ConfigSink& sink) {
+    const toml::node* node = root.node(key, Need::optional);
+    if (node == nullptr) return nullptr;
+    if (const toml::table* table = node->as_table()) return table;
+    sink.error(node->source(), "config-type",
+               fmt::format("'{}' must be a table ([{}]), not {}", key, key,
+                           detail::type_name(node->type())));
+    return nullptr;
+}
+
+MachineConfig read_document(const toml::table& document, ConfigSink& sink) {
+    MachineConfig config;
+    // An omitted [spindle] (or key in it) means the built-in mill's spindle.
+    config.spindle = default_mill().spindle;
+    TableReader root(document, "", sink);
+    if (const toml::table* machine = section(root, "machine", sink)) {
+        read_machine(*machine, config, sink);
+    } else if (!root.has("machine")) {
+        sink.error(root.region(), "config-missing-key", "missing table [machine]");
+    }
+    read_axes(root, config, sink);
+    if (const toml::table* spindle = section(root, "spindle", sink)) {
+        read_spindle(*spindle, config, sink);
+    }
+    root.reject_unknown_keys();
+    return config;
+}
+
+//! toml++ says "Error while parsing key-value pair: ..."; our messages are lower case and
+//! the printed form already says "error".
+Diagnostic syntax_error(const toml::parse_error& error, std::shared_ptr<const std::string> file) {
+    std::string description(error.description());
+    constexpr std::string_view prefix = "Error while parsing ";
+    if (description.rfind(prefix, 0) == 0) {
+        description = "toml syntax error in " + description.substr(prefix.size());
+    } else {
+        description = "toml syntax error: " + lower_first(std::move(description));
+    }
+    while (!description.empty() && description.back() == '.') description.pop_back();
+    const toml::source_position at = error.source().begin;
+    return error_at(make_location(std::move(file), at.line, at.column), "config-syntax",
+                    std::move(description));
+}
+
+// Sorted so the output reads top to bottom; toml++ visits keys alphabetically, not in file order.
+void sort_by_position(Diagnostics& diagnostics) {
+    std::stable_sort(diagnostics.begin(), diagnostics.end(),
+                     [](const Diagnostic& a, const Diagnostic& b) {
+                         return std::tie(a.location.line, a.location.column) <
+                                std::tie(b.location.line, b.location.column);
+                     });
+}
+
+}  // namespace
+
+const AxisConfig* MachineConfig::find(Axis axis) const {
+    const auto hit = std::find_if(axes.begin(), axes.end(),
+                                  [axis](const AxisConfig& a) { return a.axis == axis; });
+    return hit != axes.end() ? &*hit : nullptr;
+}
+
+AxisSet MachineConfig::axis_set() const {
+    AxisSet set;
+    for (const AxisConfig& a : axes) set.insert(a.axis);
+    return set;
+}
+
+bool MachineConfig::is_exact_stop_mcode(int code) const {
+    return std::find(exact_stop_mcodes.begin(), exact_stop_mcodes.end(), code) !=
+           exact_stop_mcodes.end();
+}
+
+Result<MachineConfig> parse_machine_config(std::string_view toml_text,
+                                           const std::string& file_name) {
+    ConfigSink sink{std::make_shared<const std::string>(file_name), {}};
+    toml::table document;
+    try {
+        document = toml::parse(toml_text, std::string_view{file_name});
+    } catch (const toml::parse_error& error) {
+        return syntax_error(error, sink.file);
+    }
+    MachineConfig config = read_document(document, sink);
+    if (sink.diagnostics.empty()) return config;
+    sort_by_position(sink.diagnostics);
+    return std::move(sink.diagnostics);
+}
+
+Result<MachineConfig> load_machine_config(const std::filesystem::path& path) {
+    const std::string file_name = path.string();
+    auto cannot_read = [&](std::string reason) {
+        return error_at(make_location(std::make_shared<const std::string>(file_name), 0, 0),
+                        "config-io", fmt::format("cannot read machine config: {}", reason));
+    };
+    // An ifstream "opens" a directory and only fails (by throwing) on the first read.
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) return cannot_read("it is a directory");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return cannot_read(lower_first(std::strerror(errno)));
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (in.bad()) return cannot_read("read failed");
+    return parse_machine_config(text.str(), file_name);
+}
+
+}  // namespace nckit

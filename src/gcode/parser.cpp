@@ -1,1 +1,158 @@
-// placeholder
+#include "nckit/gcode/parser.hpp"
+
+#include <charconv>
+#include <cstdint>
+
+#include <fmt/format.h>
+
+namespace nckit {
+
+namespace {
+
+bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
+bool is_letter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
+char upper(char c) { return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c; }
+
+//! A cursor over one line that skips the blanks the syntax allows anywhere.
+class LineParser {
+public:
+    LineParser(std::string_view line, Block& block) : line_(line), block_(block) {}
+
+    std::optional<Diagnostic> run() {
+        skip_blanks();
+        if (pos_ < line_.size() && line_[pos_] == '/') {
+            block_.block_delete = true;
+            ++pos_;
+        }
+        if (is_tape_mark()) {
+            block_.tape_mark = true;
+            return std::nullopt;
+        }
+        while (true) {
+            skip_blanks();
+            if (pos_ >= line_.size()) return std::nullopt;
+            char c = line_[pos_];
+            if (c == ';') return std::nullopt;
+            if (c == '(') {
+                if (auto error = skip_comment()) return error;
+                continue;
+            }
+            if (is_letter(c)) {
+                if (auto error = parse_word()) return error;
+                continue;
+            }
+            return unexpected(c);
+        }
+    }
+
+private:
+    void skip_blanks() {
+        while (pos_ < line_.size() && is_blank(line_[pos_])) ++pos_;
+    }
+
+    [[nodiscard]] std::uint32_t column() const { return static_cast<std::uint32_t>(pos_ + 1); }
+
+    Diagnostic error(std::uint32_t col, std::string code, std::string message) const {
+        return error_at(block_.at_column(col), std::move(code), std::move(message));
+    }
+
+    bool is_tape_mark() {
+        std::size_t p = pos_;
+        if (p >= line_.size() || line_[p] != '%') return false;
+        ++p;
+        while (p < line_.size() && is_blank(line_[p])) ++p;
+        return p == line_.size() || line_[p] == ';' || line_[p] == '(';
+    }
+
+    std::optional<Diagnostic> skip_comment() {
+        std::uint32_t open = column();
+        for (++pos_; pos_ < line_.size(); ++pos_) {
+            if (line_[pos_] == ')') {
+                ++pos_;
+                return std::nullopt;
+            }
+            if (line_[pos_] == '(') {
+                return error(column(), "syntax", "nested comment: '(' inside a comment");
+            }
+        }
+        return error(open, "syntax", "comment is not closed: '(' without ')'");
+    }
+
+    std::optional<Diagnostic> unexpected(char c) const {
+        if (c == '#' || c == '[') {
+            return error(column(), "macro",
+                         fmt::format("'{}' starts a macro expression, which this program "
+                                     "cannot use here", c));
+        }
+        auto byte = static_cast<unsigned char>(c);
+        if (byte < 0x20 || byte >= 0x7f) {
+            return error(column(), "syntax", fmt::format("unexpected byte 0x{:02x}", byte));
+        }
+        return error(column(), "syntax", fmt::format("unexpected character '{}'", c));
+    }
+
+    std::optional<Diagnostic> parse_word() {
+        Word word;
+        word.letter = upper(line_[pos_]);
+        word.column = column();
+        ++pos_;
+        skip_blanks();
+        // Gather sign, digits and point, dropping blanks, into a small buffer for from_chars.
+        char digits[64];
+        std::size_t n = 0;
+        bool negative = false;
+        if (pos_ < line_.size() && (line_[pos_] == '-' || line_[pos_] == '+')) {
+            negative = line_[pos_] == '-';
+            ++pos_;
+            skip_blanks();
+        }
+        bool any_digit = false;
+        for (; pos_ < line_.size(); ++pos_) {
+            char c = line_[pos_];
+            if (is_blank(c)) continue;
+            if (is_digit(c)) {
+                any_digit = true;
+            } else if (c == '.') {
+                if (word.has_decimal_point) {
+                    return error(column(), "syntax", "number has two decimal points");
+                }
+                word.has_decimal_point = true;
+            } else {
+                break;
+            }
+            if (n + 1 >= sizeof digits) {
+                return error(word.column, "syntax", "number has too many digits");
+            }
+            digits[n++] = c;
+        }
+        if (!any_digit) {
+            if (pos_ < line_.size() && (line_[pos_] == '#' || line_[pos_] == '[')) {
+                return unexpected(line_[pos_]);
+            }
+            return error(word.column, "syntax",
+                         fmt::format("address {} has no number after it", word.letter));
+        }
+        double value = 0;
+        auto [end, ec] = std::from_chars(digits, digits + n, value);
+        if (ec != std::errc{} || end != digits + n) {
+            return error(word.column, "syntax", "number out of range");
+        }
+        word.value = negative ? -value : value;
+        block_.words.push_back(word);
+        return std::nullopt;
+    }
+
+    std::string_view line_;
+    Block& block_;
+    std::size_t pos_ = 0;
+};
+
+}  // namespace
+
+std::optional<Diagnostic> parse_block(std::string_view line, Block& block) {
+    block.clear();
+    return LineParser(line, block).run();
+}
+
+}  // namespace nckit

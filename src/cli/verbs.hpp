@@ -1,0 +1,10 @@
+#pragma once
+// One registration function per verb: each adds its subcommand and options to the app.
+#include <CLI/CLI.hpp>
+
+namespace nckit::cli {
+
+void add_moves_verb(CLI::App& app, int& exit_status);
+void add_check_verb(CLI::App& app, int& exit_status);
+
+}  // namespace nckit::cli

@@ -1,0 +1,117 @@
+#include "block_words.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+namespace nckit::interp {
+
+namespace {
+
+std::string g_name(GCode code) {
+    return code % 10 == 0 ? fmt::format("G{}", code / 10) : fmt::format("G{}.{}", code / 10, code % 10);
+}
+
+MGroup m_group_of(int code) {
+    switch (code) {
+        case 0: case 1: case 2: case 30: case 60: return MGroup::stopping;
+        case 6: return MGroup::tool_change;
+        case 3: case 4: case 5: return MGroup::spindle;
+        case 7: case 8: case 9: return MGroup::coolant;
+        default: return MGroup::other;
+    }
+}
+
+//! M7 and M8 may run together (mist and flood); any other pair of one group conflicts.
+bool m_conflict(int a, int b) {
+    if (a == b) return true;
+    MGroup group = m_group_of(a);
+    if (group != m_group_of(b) || group == MGroup::other) return false;
+    if (group == MGroup::coolant) return a == 9 || b == 9;
+    return true;
+}
+
+}  // namespace
+
+std::optional<ModalGroup> group_of(GCode code) {
+    switch (code) {
+        case g(4): case g(10): case g(28): case g(50): case g(52): case g(53): case g(92):
+        case g(92, 1):
+            return ModalGroup::non_modal;
+        case g(9): return ModalGroup::exact_stop;
+        case g(0): case g(1): case g(2): case g(3): case g(32): case g(33): case g(80):
+            return ModalGroup::motion;
+        case g(17): case g(18): case g(19): return ModalGroup::plane;
+        case g(90): case g(91): return ModalGroup::distance;
+        case g(94): case g(95): return ModalGroup::feed_mode;
+        case g(20): case g(21): return ModalGroup::units;
+        case g(40): return ModalGroup::cutter_comp;
+        case g(49): return ModalGroup::length_comp;
+        case g(96): case g(97): return ModalGroup::spindle_mode;
+        case g(54): case g(55): case g(56): case g(57): case g(58): case g(59):
+            return ModalGroup::work_system;
+        case g(61): case g(64): return ModalGroup::path_control;
+        case g(7): case g(8): return ModalGroup::diameter;
+        default: return std::nullopt;
+    }
+}
+
+bool BlockWords::has_m(int code) const {
+    for (std::size_t i = 0; i < mcode_count; ++i) {
+        if (mcodes[i].code == code) return true;
+    }
+    return false;
+}
+
+std::optional<Diagnostic> collect_words(const Block& block, BlockWords& out) {
+    out = BlockWords{};
+    for (const Word& word : block.words) {
+        auto at = [&] { return block.at_column(word.column); };
+        if (word.letter == 'G') {
+            double tenths = word.value * 10.0;
+            auto code = static_cast<GCode>(std::lround(tenths));
+            if (word.value < 0 || std::abs(tenths - code) > 1e-6) {
+                return error_at(at(), "unknown-gcode", fmt::format("G{} is not a G code", word.value));
+            }
+            auto group = group_of(code);
+            if (!group) {
+                return error_at(at(), "unsupported-gcode",
+                                fmt::format("{} is not supported", g_name(code)));
+            }
+            GWord& slot = out.gcodes[static_cast<std::size_t>(*group)];
+            if (slot.code >= 0) {
+                return error_at(at(), "modal-conflict",
+                                fmt::format("{} and {} are in the same modal group",
+                                            g_name(slot.code), g_name(code)));
+            }
+            slot = GWord{code, word.column};
+        } else if (word.letter == 'M') {
+            auto code = static_cast<int>(std::lround(word.value));
+            if (word.value < 0 || std::abs(word.value - code) > 1e-9) {
+                return error_at(at(), "unknown-mcode", fmt::format("M{} is not an M code", word.value));
+            }
+            for (std::size_t i = 0; i < out.mcode_count; ++i) {
+                if (m_conflict(out.mcodes[i].code, code)) {
+                    return error_at(at(), "modal-conflict",
+                                    fmt::format("M{} and M{} cannot be in one block",
+                                                out.mcodes[i].code, code));
+                }
+            }
+            if (out.mcode_count == out.mcodes.size()) {
+                return error_at(at(), "too-many-mcodes",
+                                fmt::format("more than {} M codes in one block", out.mcodes.size()));
+            }
+            out.mcodes[out.mcode_count++] = MWord{code, word.column};
+        } else {
+            const Word*& slot = out.letters[word.letter - 'A'];
+            if (slot != nullptr) {
+                return error_at(at(), "duplicate-word",
+                                fmt::format("{} appears twice in one block", word.letter));
+            }
+            slot = &word;
+        }
+    }
+    return std::nullopt;
+}
+
+}  // namespace nckit::interp

@@ -1,0 +1,68 @@
+#pragma once
+// What one block says, sorted by address: its G codes by modal group, its M codes, and at most
+// one value for every other letter. Conflicts (two words of one group, a letter twice) are found
+// here, before anything in the block runs.
+#include <array>
+#include <optional>
+
+#include "nckit/core/diagnostic.hpp"
+#include "nckit/gcode/block.hpp"
+
+namespace nckit::interp {
+
+//! A G code as ten times its number, so G92.1 is 921 and G1 is 10.
+using GCode = int;
+constexpr GCode g(int major, int minor = 0) { return major * 10 + minor; }
+
+enum class ModalGroup {
+    non_modal,      // G4 G10 G28 G50 G52 G53 G92 G92.1
+    exact_stop,     // G9
+    motion,         // G0 G1 G2 G3 G32 G33 G80
+    plane,          // G17 G18 G19
+    distance,       // G90 G91
+    feed_mode,      // G94 G95
+    units,          // G20 G21
+    cutter_comp,    // G40
+    length_comp,    // G49
+    spindle_mode,   // G96 G97
+    work_system,    // G54..G59
+    path_control,   // G61 G64
+    diameter,       // G7 G8
+    count
+};
+constexpr std::size_t group_count = static_cast<std::size_t>(ModalGroup::count);
+
+enum class MGroup { stopping, tool_change, spindle, coolant, other, count };
+
+struct GWord {
+    GCode code = -1;
+    std::uint32_t column = 0;
+};
+
+struct MWord {
+    int code = -1;
+    std::uint32_t column = 0;
+};
+
+struct BlockWords {
+    std::array<GWord, group_count> gcodes{};   //!< code -1 where the group is absent
+    std::array<MWord, 5> mcodes{};             //!< in the order written
+    std::size_t mcode_count = 0;
+    std::array<const Word*, 26> letters{};     //!< every other letter; null where absent
+
+    [[nodiscard]] GCode group(ModalGroup g) const { return gcodes[static_cast<std::size_t>(g)].code; }
+    [[nodiscard]] std::uint32_t group_column(ModalGroup g) const {
+        return gcodes[static_cast<std::size_t>(g)].column;
+    }
+    [[nodiscard]] const Word* word(char letter) const { return letters[letter - 'A']; }
+    [[nodiscard]] bool has(char letter) const { return word(letter) != nullptr; }
+    [[nodiscard]] bool has_m(int code) const;
+};
+
+//! The modal group of a G code nckit knows, or nothing for an unknown code.
+[[nodiscard]] std::optional<ModalGroup> group_of(GCode code);
+
+//! Sorts the block's words; the error names the first offending word.
+[[nodiscard]] std::optional<Diagnostic> collect_words(const Block& block, BlockWords& out);
+
+}  // namespace nckit::interp

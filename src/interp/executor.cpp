@@ -1,0 +1,225 @@
+#include "executor.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+namespace nckit::interp {
+
+namespace {
+constexpr double mm_per_inch = 25.4;
+constexpr double m_per_foot = 0.3048;
+// Fanuc's least input increment: 0.001 mm, 0.0001 in, 0.001 deg.
+constexpr double least_increment_metric = 0.001;
+constexpr double least_increment_inch = 0.0001;
+}  // namespace
+
+Executor::Executor(const MachineConfig& machine, const InterpreterOptions& options)
+    : machine_(machine), options_(options) {
+    for (const AxisConfig& axis : machine.axes) {
+        configured_.insert(axis.axis);
+        rotary_[index(axis.axis)] = axis.kind == AxisKind::rotary;
+        position_[axis.axis] = axis.home;
+    }
+    modal_.diameter_mode = machine.diameter_mode;
+}
+
+Diagnostic Executor::error(std::uint32_t column, std::string code, std::string message) const {
+    return error_at(block_->at_column(column), std::move(code), std::move(message));
+}
+
+std::uint32_t Executor::column_of(char letter) const {
+    const Word* word = words_.word(letter);
+    return word != nullptr ? word->column : 1;
+}
+
+void Executor::push(std::vector<Move>& out, decltype(Move::what) what) const {
+    std::int64_t n = -1;
+    if (const Word* word = words_.word('N')) n = static_cast<std::int64_t>(word->value);
+    out.push_back(Move{std::move(what), block_->location, n});
+}
+
+bool Executor::axis_is_linear(Axis axis) const { return !rotary_[index(axis)]; }
+
+double Executor::axis_value(Axis axis, const Word& word) const {
+    bool linear = axis_is_linear(axis);
+    double value = word.value;
+    if (!word.has_decimal_point && machine_.decimal_point_input == DecimalPointInput::least_increment) {
+        bool inch = modal_.length_factor_mm != 1.0;
+        value *= (linear && inch) ? least_increment_inch : least_increment_metric;
+    }
+    if (linear) value *= modal_.length_factor_mm;
+    if (axis == Axis::X && modal_.diameter_mode) value /= 2.0;
+    return value;
+}
+
+double Executor::offset_value(const Word& word) const {
+    double value = word.value;
+    if (!word.has_decimal_point && machine_.decimal_point_input == DecimalPointInput::least_increment) {
+        value *= modal_.length_factor_mm != 1.0 ? least_increment_inch : least_increment_metric;
+    }
+    return value * modal_.length_factor_mm;
+}
+
+std::optional<Diagnostic> Executor::run(const Block& block, std::vector<Move>& out, bool& program_end) {
+    block_ = &block;
+    if (auto e = collect_words(block, words_)) return e;
+    if (auto e = check_words()) return e;
+
+    // Everything below may change state, so work on copies and commit at the end: an error
+    // leaves the interpreter as it was before the block.
+    ModalState saved_modal = modal_;
+    Offsets saved_offsets = offsets_;
+    AxisVector saved_position = position_;
+    std::size_t saved_size = out.size();
+    auto fail = [&](Diagnostic d) {
+        modal_ = saved_modal;
+        offsets_ = saved_offsets;
+        position_ = saved_position;
+        out.resize(saved_size);
+        return std::optional<Diagnostic>(std::move(d));
+    };
+
+    if (auto e = set_modes()) return fail(*e);
+    if (auto e = set_feed_and_spindle(out)) return fail(*e);
+    emit_mcodes(out, false);
+    if (auto e = dwell(out)) return fail(*e);
+    if (auto e = set_coordinates()) return fail(*e);
+    if (auto e = move(out)) return fail(*e);
+    emit_mcodes(out, true);
+    program_end = words_.has_m(2) || words_.has_m(30);
+    return std::nullopt;
+}
+
+std::optional<Diagnostic> Executor::set_modes() {
+    auto code = [&](ModalGroup group) { return words_.group(group); };
+    if (GCode c = code(ModalGroup::diameter); c >= 0) modal_.diameter_mode = c == g(7);
+    if (GCode c = code(ModalGroup::units); c >= 0) modal_.length_factor_mm = c == g(20) ? mm_per_inch : 1.0;
+    if (GCode c = code(ModalGroup::feed_mode); c >= 0) {
+        modal_.feed_mode = c == g(95) ? FeedMode::per_revolution : FeedMode::per_minute;
+    }
+    if (GCode c = code(ModalGroup::plane); c >= 0) {
+        modal_.plane = c == g(17) ? Plane::xy : c == g(18) ? Plane::zx : Plane::yz;
+    }
+    if (GCode c = code(ModalGroup::work_system); c >= 0) {
+        modal_.work_system = static_cast<std::size_t>(c / 10 - 54);
+    }
+    if (GCode c = code(ModalGroup::path_control); c >= 0) {
+        modal_.path.exact_stop = c == g(61);
+        modal_.path.tolerance_mm = 0;
+        if (c == g(64) && words_.has('P')) {
+            const Word& p = *words_.word('P');
+            if (p.value < 0) return error(p.column, "bad-value", "G64 P tolerance must not be negative");
+            modal_.path.tolerance_mm = offset_value(p);
+        }
+    }
+    if (GCode c = code(ModalGroup::distance); c >= 0) modal_.incremental = c == g(91);
+    if (GCode c = code(ModalGroup::motion); c >= 0) modal_.motion = c;
+    return std::nullopt;
+}
+
+std::optional<Diagnostic> Executor::set_feed_and_spindle(std::vector<Move>& out) {
+    if (const Word* f = words_.word('F'); f != nullptr && !(motion_ == g(32) || motion_ == g(33))) {
+        if (f->value < 0) return error(f->column, "bad-value", "feed rate F must not be negative");
+        modal_.feed = f->value * modal_.length_factor_mm;
+        modal_.feed_set = true;
+    }
+    SpindleState& spindle = modal_.spindle;
+    if (GCode c = words_.group(ModalGroup::spindle_mode); c >= 0) spindle.constant_surface_speed = c == g(96);
+    bool clamp_block = words_.group(ModalGroup::non_modal) == g(50);
+    if (const Word* s = words_.word('S')) {
+        if (s->value < 0) return error(s->column, "bad-value", "spindle speed S must not be negative");
+        if (clamp_block) {
+            spindle.rpm_clamp = s->value;
+        } else if (spindle.constant_surface_speed) {
+            bool inch = modal_.length_factor_mm != 1.0;
+            spindle.surface_speed_m_min = inch ? s->value * m_per_foot : s->value;
+        } else {
+            if (s->value > machine_.spindle.max_rpm) {
+                return error(s->column, "spindle-limit",
+                             fmt::format("S{} exceeds the spindle's {} rpm", s->value, machine_.spindle.max_rpm));
+            }
+            spindle.rpm = s->value;
+        }
+        if (!clamp_block) {
+            Io io{IoKind::spindle_speed, 0, spindle.constant_surface_speed ? spindle.surface_speed_m_min : spindle.rpm};
+            io.constant_surface_speed = spindle.constant_surface_speed;
+            io.rpm_clamp = spindle.rpm_clamp;
+            push(out, io);
+        }
+    }
+    if (const Word* t = words_.word('T')) {
+        modal_.tool = static_cast<int>(t->value);
+        push(out, Io{IoKind::tool_select, modal_.tool, 0});
+    }
+    return std::nullopt;
+}
+
+void Executor::emit_mcodes(std::vector<Move>& out, bool stopping) {
+    for (std::size_t i = 0; i < words_.mcode_count; ++i) {
+        int code = words_.mcodes[i].code;
+        bool is_stop = code == 0 || code == 1 || code == 2 || code == 30 || code == 60;
+        if (is_stop != stopping) continue;
+        Io io{IoKind::mcode, code, 0};
+        io.waits = is_stop || code == 6 || machine_.is_exact_stop_mcode(code);
+        SpindleState& spindle = modal_.spindle;
+        if (code == 3 || code == 4) {
+            spindle.direction = code == 3 ? 1 : -1;
+            io.value = spindle.constant_surface_speed ? spindle.surface_speed_m_min : spindle.rpm;
+            io.constant_surface_speed = spindle.constant_surface_speed;
+            io.rpm_clamp = spindle.rpm_clamp;
+        } else if (code == 5 || code == 2 || code == 30) {
+            spindle.direction = 0;
+        }
+        push(out, io);
+    }
+}
+
+std::optional<Diagnostic> Executor::dwell(std::vector<Move>& out) {
+    if (words_.group(ModalGroup::non_modal) != g(4)) return std::nullopt;
+    double seconds = 0;
+    if (const Word* p = words_.word('P')) {
+        seconds = p->value / 1000.0;  // Fanuc: P is milliseconds (LinuxCNC reads seconds)
+    } else if (const Word* x = words_.word('X')) {
+        seconds = x->value;
+    } else {
+        return error(words_.group_column(ModalGroup::non_modal), "missing-word", "G4 needs P (ms) or X (s)");
+    }
+    if (seconds < 0) return error(words_.group_column(ModalGroup::non_modal), "bad-value", "dwell time is negative");
+    push(out, Dwell{seconds});
+    return std::nullopt;
+}
+
+std::optional<Diagnostic> Executor::set_coordinates() {
+    GCode code = words_.group(ModalGroup::non_modal);
+    auto each_axis_word = [&](auto&& apply) {
+        for (const AxisConfig& axis : machine_.axes) {
+            if (const Word* w = words_.word(letter(axis.axis))) apply(axis.axis, axis_value(axis.axis, *w));
+        }
+    };
+    if (code == g(10)) {
+        const Word* p = words_.word('P');
+        auto l = static_cast<int>(words_.word('L')->value);
+        auto number = static_cast<int>(p->value);
+        std::size_t system = number == 0 ? modal_.work_system : static_cast<std::size_t>(number - 1);
+        AxisVector& work = offsets_.work[system];
+        each_axis_word([&](Axis a, double v) {
+            if (l == 20) {
+                work[a] = position_[a] - offsets_.g92[a] - offsets_.g52[a] - v;
+            } else {
+                work[a] = modal_.incremental ? work[a] + v : v;
+            }
+        });
+    } else if (code == g(92) || (code == g(50) && block_has_axis_words())) {
+        each_axis_word([&](Axis a, double v) {
+            offsets_.g92[a] = position_[a] - offsets_.work[modal_.work_system][a] - offsets_.g52[a] - v;
+        });
+    } else if (code == g(92, 1)) {
+        offsets_.g92 = AxisVector{};
+    } else if (code == g(52)) {
+        each_axis_word([&](Axis a, double v) { offsets_.g52[a] = v; });
+    }
+    return std::nullopt;
+}
+
+}  // namespace nckit::interp

@@ -1,0 +1,69 @@
+#pragma once
+// Runs one parsed block against the modal state and appends the moves it makes.
+#include <optional>
+#include <vector>
+
+#include "block_words.hpp"
+#include "modal_state.hpp"
+#include "nckit/core/machine.hpp"
+#include "nckit/interp/interpreter.hpp"
+
+namespace nckit::interp {
+
+class Executor {
+public:
+    Executor(const MachineConfig& machine, const InterpreterOptions& options);
+
+    //! Runs `block`: every check first, then its actions in RS-274 order. On an error nothing of
+    //! the block has happened and `out` is unchanged. Sets `program_end` on M2/M30.
+    [[nodiscard]] std::optional<Diagnostic> run(const Block& block, std::vector<Move>& out,
+                                                bool& program_end);
+
+private:
+    // Checks (executor_checks.cpp): nothing changes state.
+    std::optional<Diagnostic> check_words();
+    std::optional<Diagnostic> check_axis_letter(const Word& word) const;
+
+    // Values of words, converted to mm / deg / s (executor.cpp).
+    [[nodiscard]] double axis_value(Axis axis, const Word& word) const;
+    [[nodiscard]] double offset_value(const Word& word) const;  // I J K R: length, no diameter
+    [[nodiscard]] bool axis_is_linear(Axis axis) const;
+
+    // Actions before motion (executor.cpp).
+    std::optional<Diagnostic> set_modes();
+    std::optional<Diagnostic> set_feed_and_spindle(std::vector<Move>& out);
+    void emit_mcodes(std::vector<Move>& out, bool stopping);
+    std::optional<Diagnostic> dwell(std::vector<Move>& out);
+    std::optional<Diagnostic> set_coordinates();
+
+    // Motion (executor_motion.cpp).
+    std::optional<Diagnostic> move(std::vector<Move>& out);
+    std::optional<Diagnostic> home(std::vector<Move>& out);
+    std::optional<Diagnostic> straight(GCode motion, const AxisVector& target, std::vector<Move>& out);
+    std::optional<Diagnostic> arc(GCode motion, const AxisVector& target, std::vector<Move>& out);
+    std::optional<Diagnostic> sync(const AxisVector& target, std::vector<Move>& out);
+    std::optional<Diagnostic> check_travel(const AxisVector& low, const AxisVector& high) const;
+    [[nodiscard]] AxisVector target_from_words(bool machine_coordinates) const;
+    [[nodiscard]] bool block_has_axis_words() const;
+    [[nodiscard]] Feed current_feed() const;
+    [[nodiscard]] double spindle_rpm_at(double work_x_radius_mm) const;
+
+    [[nodiscard]] Diagnostic error(std::uint32_t column, std::string code, std::string message) const;
+    [[nodiscard]] std::uint32_t column_of(char letter) const;
+    void push(std::vector<Move>& out, decltype(Move::what) what) const;
+
+    const MachineConfig& machine_;
+    InterpreterOptions options_;
+    AxisSet configured_;
+    std::array<bool, axis_count> rotary_{};
+
+    ModalState modal_;
+    Offsets offsets_;
+    AxisVector position_;  //!< machine coordinates, mm / deg
+
+    const Block* block_ = nullptr;  //!< the block being run
+    BlockWords words_;
+    GCode motion_ = g(80);          //!< motion code for this block (explicit or modal)
+};
+
+}  // namespace nckit::interp

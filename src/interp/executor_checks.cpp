@@ -1,0 +1,147 @@
+// The checks a block passes before any of it runs: every word must be used by something in the
+// block, and every value must make sense for its code. A word nothing uses is an error rather
+// than ignored: on a machine, a mistyped program must not run.
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "executor.hpp"
+
+namespace nckit::interp {
+
+namespace {
+
+bool is_axis_letter(char c) { return axis_from_letter(c).has_value(); }
+
+bool is_arc(GCode motion) { return motion == g(2) || motion == g(3); }
+bool is_thread(GCode motion) { return motion == g(32) || motion == g(33); }
+
+//! The centre-offset letters that belong to a plane: G17 I J, G18 I K, G19 J K.
+bool offset_in_plane(char letter, Plane plane) {
+    switch (plane) {
+        case Plane::xy: return letter == 'I' || letter == 'J';
+        case Plane::zx: return letter == 'I' || letter == 'K';
+        case Plane::yz: return letter == 'J' || letter == 'K';
+    }
+    return false;
+}
+
+}  // namespace
+
+bool Executor::block_has_axis_words() const {
+    for (char c : axis_letters) {
+        if (words_.has(c)) return true;
+    }
+    return false;
+}
+
+std::optional<Diagnostic> Executor::check_axis_letter(const Word& word) const {
+    Axis axis = *axis_from_letter(word.letter);
+    if (!configured_.contains(axis)) {
+        return error(word.column, "unknown-axis", fmt::format("the machine has no {} axis", word.letter));
+    }
+    return std::nullopt;
+}
+
+std::optional<Diagnostic> Executor::check_words() {
+    const GCode explicit_motion = words_.group(ModalGroup::motion);
+    const GCode non_modal = words_.group(ModalGroup::non_modal);
+    motion_ = explicit_motion >= 0 ? explicit_motion : modal_.motion;
+    const Plane plane = [&] {
+        GCode p = words_.group(ModalGroup::plane);
+        if (p < 0) return modal_.plane;
+        return p == g(17) ? Plane::xy : p == g(18) ? Plane::zx : Plane::yz;
+    }();
+
+    const bool dwell = non_modal == g(4);
+    const bool axes_for_setting = non_modal == g(10) || non_modal == g(28) || non_modal == g(52) ||
+                                  non_modal == g(92) || non_modal == g(50);
+    if (axes_for_setting && explicit_motion >= 0 && block_has_axis_words()) {
+        return error(words_.group_column(ModalGroup::motion), "modal-conflict",
+                     "two G codes in this block both use the axis words");
+    }
+    if (non_modal == g(53) && !(motion_ == g(0) || motion_ == g(1))) {
+        return error(words_.group_column(ModalGroup::non_modal), "bad-combination",
+                     "G53 moves only with G0 or G1");
+    }
+    const bool moves = !dwell && !axes_for_setting && motion_ != g(80);
+
+    for (const Word& word : block_->words) {
+        char c = word.letter;
+        auto unused = [&](std::string why) { return error(word.column, "unused-word", std::move(why)); };
+        if (c == 'G' || c == 'M' || c == 'F' || c == 'S' || c == 'T') continue;
+        if (c == 'N' || c == 'O') {
+            if (&word != &block_->words.front()) {
+                return error(word.column, "syntax", fmt::format("{} word must start the block", c));
+            }
+            continue;
+        }
+        if (is_axis_letter(c)) {
+            if (dwell) {
+                if (c == 'X' && !words_.has('P')) continue;
+                return unused(fmt::format("G4 takes no axis words ({} given)", c));
+            }
+            if (auto e = check_axis_letter(word)) return e;
+            if (!moves && !axes_for_setting) {
+                return unused(fmt::format("{} word with no motion mode to use it (G80 is active)", c));
+            }
+            continue;
+        }
+        switch (c) {
+            case 'I': case 'J': case 'K':
+                if (is_arc(motion_) && moves) {
+                    if (!offset_in_plane(c, plane)) {
+                        return error(word.column, "bad-arc",
+                                     fmt::format("{} is not a centre offset in the active plane", c));
+                    }
+                    if (words_.has('R')) return error(word.column, "bad-arc", "arc with both R and I/J/K");
+                    continue;
+                }
+                if (c == 'K' && is_thread(motion_) && moves) continue;
+                return unused(fmt::format("{} word with no G2/G3 to use it", c));
+            case 'R':
+                if (is_arc(motion_) && moves) continue;
+                return unused("R word with no G2/G3 to use it");
+            case 'E':
+                if (is_thread(motion_) && moves) continue;
+                return unused("E word with no G32/G33 to use it");
+            case 'P':
+                if (dwell || non_modal == g(10) || words_.group(ModalGroup::path_control) == g(64)) continue;
+                return unused("P word with no G4, G10 or G64 to use it");
+            case 'Q':
+                // LinuxCNC's G64 Q (naive CAM tolerance) is accepted; nckit's planner needs only P.
+                if (words_.group(ModalGroup::path_control) == g(64)) continue;
+                return unused("Q word with no G64 to use it");
+            case 'L':
+                if (non_modal == g(10)) continue;
+                return unused("L word with no G10 to use it");
+            default:
+                return error(word.column, "unsupported-word", fmt::format("{} word is not supported", c));
+        }
+    }
+
+    if (non_modal == g(10)) {
+        const Word* l = words_.word('L');
+        const Word* p = words_.word('P');
+        if (l == nullptr || (l->value != 2 && l->value != 20)) {
+            return error(words_.group_column(ModalGroup::non_modal), "bad-g10", "G10 needs L2 or L20");
+        }
+        if (p == nullptr || p->value != std::floor(p->value) || p->value < 0 || p->value > 6) {
+            return error(p ? p->column : words_.group_column(ModalGroup::non_modal), "bad-g10",
+                         "G10 needs P0 (active system) or P1 to P6 (G54 to G59)");
+        }
+    }
+    const bool arc_offsets = words_.has('I') || words_.has('J') || words_.has('K') || words_.has('R');
+    const bool cuts = motion_ == g(1) || (is_arc(motion_) && arc_offsets);
+    if (moves && cuts && (block_has_axis_words() || is_arc(motion_))) {
+        bool feed_now = words_.has('F') || modal_.feed_set;
+        double feed = words_.has('F') ? words_.word('F')->value : modal_.feed;
+        if (!feed_now || feed <= 0) {
+            std::uint32_t column = words_.group_column(ModalGroup::motion);
+            return error(column != 0 ? column : 1, "no-feed", "cutting move with no feed rate (F)");
+        }
+    }
+    return std::nullopt;
+}
+
+}  // namespace nckit::interp

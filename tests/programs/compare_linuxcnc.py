@@ -1,0 +1,590 @@
+#!/usr/bin/env python3
+"""Side-by-side test of `nckit moves --json` against LinuxCNC's standalone interpreter `rs274`.
+
+For every program (`NN_name.ngc`) it runs `rs274 -b -g` (block delete on) and `nckit moves --json`,
+turns rs274's canonical calls into absolute machine positions in mm, and compares the motions in
+order: kind, end point on every axis both sides have (X Y Z, and A B C on machines that have them),
+each arc's centre on the two plane axes and its direction, and the source line of each motion.
+
+How rs274's output is read (LinuxCNC 2.9):
+- STRAIGHT_TRAVERSE / STRAIGHT_FEED (x, y, z, a, b, c[, u, v, w]) and ARC_FEED (first_end,
+  second_end, first_centre, second_centre, rotation, axis_end, a, b, c[, u, v, w]) carry program
+  coordinates in the current USE_LENGTH_UNITS; first/second are X,Y (G17), Z,X (G18), Y,Z (G19).
+  A negative rotation is G2 (cw), a positive one G3 (ccw).
+- Machine = reported + G5x offset + G92 offset; offsets are printed in the units active when they
+  are set (G52 is printed as a G92 offset).
+- Values are printed with 4 decimals in program units, so the tolerance is 1e-4 mm, widened to the
+  printing resolution where that is coarser (inch programs, values summed with offsets).
+- rs274 prints no source line numbers: the harness runs it a second time on a copy of the program
+  with a `(nckit-line N)` comment at the end of every line, which rs274 echoes as COMMENT() before
+  the block's motions. Both runs must give the same motions.
+
+A program may name the nckit machine file in a comment in its first lines:
+`( nckit-machine: lathe.toml )`, resolved against examples/machines/.
+
+Exit status: 0 when every program matches, 1 otherwise (and when rs274 or nckit is missing).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+from dataclasses import dataclass, field
+from pathlib import Path
+
+try:
+    import tomllib
+except ModuleNotFoundError:  # Python < 3.11: machine files are then read from nckit's output only
+    tomllib = None
+
+REPO = Path(__file__).resolve().parents[2]
+DEFAULT_NCKIT = REPO / "build" / "release" / "src" / "nckit"
+DEFAULT_MACHINES = REPO / "examples" / "machines"
+
+TOL_MM = 1e-4              # required agreement
+PRINT_HALF_ULP = 0.5e-4    # rs274 prints %.4f: a printed value is within this of the true one
+ALL_AXES = "XYZABCUVW"
+COMPARED_AXES = "XYZABC"   # rs274 -g prints U V W only with an INI that configures them
+ROTARY = "ABC"
+UNITS_MM = {"CANON_UNITS_MM": 1.0, "CANON_UNITS_INCHES": 25.4, "CANON_UNITS_CM": 10.0}
+PLANES = {  # canonical plane -> (first axis, second axis, axis normal to the plane)
+    "CANON_PLANE_XY": ("X", "Y", "Z"),
+    "CANON_PLANE_XZ": ("Z", "X", "Y"),
+    "CANON_PLANE_YZ": ("Y", "Z", "X"),
+}
+COMPARED_KINDS = {"rapid", "linear", "arc", "sync"}
+KNOWN_KINDS = COMPARED_KINDS | {"dwell", "io"}
+LINE_TAG = "nckit-line"
+# Canonical calls that move the machine in ways this harness does not model.
+UNSUPPORTED_CALLS = {"STRAIGHT_PROBE", "RIGID_TAP", "NURBS_FEED", "NURBS_G5_FEED", "NURBS_G6_FEED"}
+DEFAULT_MILL = {"axes": {"X": (-500.0, 500.0), "Y": (-500.0, 500.0), "Z": (-500.0, 500.0)},
+                "diameter_mode": False}
+
+CALL_RE = re.compile(r"^\s*\d+\s+N(\S*)\s+([A-Z_][A-Z0-9_]*)\((.*)\)\s*$")
+MACHINE_RE = re.compile(r"nckit-machine\s*:\s*([^\s)]+)", re.IGNORECASE)
+
+
+class ProgramError(Exception):
+    """The program, not the comparison, is at fault (rs274 rejects it, it leaves travel...)."""
+
+
+@dataclass
+class Motion:
+    kind: str                                  # rapid, linear, arc, sync
+    end: dict[str, float]                      # axis -> machine position, mm (deg)
+    line: int | None = None                    # source line, when known
+    center: dict[str, float] | None = None     # arcs: the two plane axes
+    direction: str | None = None               # arcs: cw / ccw
+    plane: tuple[str, str] | None = None       # arcs (rs274 side): first and second plane axes
+    tol: dict[str, float] = field(default_factory=dict)  # axis -> tolerance, mm (deg)
+    text: str = ""                             # what produced it, for messages
+
+
+# ----------------------------------------------------------------------------------------------
+# Machine files
+
+def _axis_travel(table: dict) -> tuple[float, float] | None:
+    """Travel limits from an axis table, whatever the key spelling."""
+    for lo, hi in (("min", "max"), ("travel_min", "travel_max"), ("min_mm", "max_mm"),
+                   ("min_deg", "max_deg"), ("travel_min_mm", "travel_max_mm")):
+        if isinstance(table.get(lo), (int, float)) and isinstance(table.get(hi), (int, float)):
+            return float(table[lo]), float(table[hi])
+    for key in ("travel", "travel_mm", "limits", "range"):
+        v = table.get(key)
+        if isinstance(v, list) and len(v) == 2 and all(isinstance(x, (int, float)) for x in v):
+            return float(v[0]), float(v[1])
+        if isinstance(v, dict):
+            t = _axis_travel(v)
+            if t:
+                return t
+    return None
+
+
+def _find_key(doc, key):
+    if isinstance(doc, dict):
+        if key in doc:
+            return doc[key]
+        for v in doc.values():
+            found = _find_key(v, key)
+            if found is not None:
+                return found
+    return None
+
+
+def load_machine(path: Path) -> dict:
+    """{'axes': {letter: (min, max) or None}, 'diameter_mode': bool}, best effort; axes may be
+    empty when the schema is not understood (nckit's own output then says which axes exist)."""
+    info = {"axes": {}, "diameter_mode": False}
+    if tomllib is None:
+        return info
+    with open(path, "rb") as f:
+        doc = tomllib.load(f)
+    info["diameter_mode"] = bool(_find_key(doc, "diameter_mode") or False)
+    axes = doc.get("axes", doc.get("axis"))
+    if isinstance(axes, list):
+        for t in axes:
+            if not isinstance(t, dict):
+                continue
+            name = next((t[k] for k in ("name", "axis", "letter", "id") if isinstance(t.get(k), str)),
+                        None)
+            if name and name.upper() in ALL_AXES and len(name) == 1:
+                info["axes"][name.upper()] = _axis_travel(t)
+    elif isinstance(axes, dict):
+        for name, t in axes.items():
+            if name.upper() in ALL_AXES and len(name) == 1 and isinstance(t, dict):
+                info["axes"][name.upper()] = _axis_travel(t)
+    else:
+        for name, t in doc.items():
+            if len(name) == 1 and name.upper() in ALL_AXES and isinstance(t, dict):
+                info["axes"][name.upper()] = _axis_travel(t)
+    return info
+
+
+def machine_for(program: Path, machines_dir: Path) -> Path | None:
+    """The machine file a program asks for in a comment in its first lines."""
+    with open(program, encoding="utf-8", errors="replace") as f:
+        for _, text in zip(range(5), f):
+            m = MACHINE_RE.search(text)
+            if m:
+                return machines_dir / m.group(1)
+    return None
+
+
+# ----------------------------------------------------------------------------------------------
+# rs274
+
+def annotate(source: str) -> str:
+    """The program with a `(nckit-line N)` comment at the end of each line: rs274 keeps the last
+    parenthesised comment of a block and prints it before the block's motions. It goes before a
+    `;` comment, which runs to the end of the line."""
+    out = []
+    for number, line in enumerate(source.splitlines(), start=1):
+        body = line.rstrip("\r\n")
+        stripped = body.strip()
+        if not stripped or stripped.startswith("%"):
+            out.append(body)
+            continue
+        depth, cut = 0, len(body)
+        for i, ch in enumerate(body):
+            if ch == "(":
+                depth += 1
+            elif ch == ")":
+                depth = max(0, depth - 1)
+            elif ch == ";" and depth == 0:
+                cut = i
+                break
+        out.append(f"{body[:cut]}({LINE_TAG} {number}){body[cut:]}")
+    return "\n".join(out) + "\n"
+
+
+def run_rs274(rs274: str, program: Path, workdir: Path, timeout: float) -> str:
+    """rs274's canonical calls for a program. It runs in a scratch folder because it rewrites its
+    parameter file at exit; `-b` turns block delete on (it is off by default in rs274)."""
+    proc = subprocess.run([rs274, "-b", "-g", str(program)], cwd=workdir,
+                          stdin=subprocess.DEVNULL, capture_output=True, text=True,
+                          timeout=timeout)
+    if proc.returncode != 0:
+        msg = [l for l in proc.stderr.splitlines() if l.strip() and l.strip() != "executing"]
+        raise ProgramError(f"rs274 exit status {proc.returncode}: {' | '.join(msg) or '(no message)'}")
+    return proc.stdout
+
+
+def _numbers(args: str, call: str, count: int) -> list[float]:
+    try:
+        values = [float(a) for a in args.split(",")]
+    except ValueError:
+        raise ProgramError(f"cannot read rs274 call {call}({args})") from None
+    if len(values) < count:
+        raise ProgramError(f"rs274 call {call}({args}) has fewer than {count} arguments")
+    return values
+
+
+def parse_rs274(output: str, diameter_machine: bool) -> list[Motion]:
+    """rs274 canonical calls -> motions in absolute machine mm (deg)."""
+    scale = 1.0                                   # mm per program unit
+    g5x = {a: 0.0 for a in ALL_AXES}              # mm (deg)
+    g92 = {a: 0.0 for a in ALL_AXES}
+    g5x_q = {a: 0.0 for a in ALL_AXES}            # printing resolution of the offset, mm
+    g92_q = {a: 0.0 for a in ALL_AXES}
+    plane = PLANES["CANON_PLANE_XY"]
+    line: int | None = None
+    diameter = False
+    synched = False
+    motions: list[Motion] = []
+
+    def to_mm(axis: str, v: float) -> float:
+        return v if axis in ROTARY else v * scale
+
+    def machine(axis: str, v: float) -> float:
+        return to_mm(axis, v) + g5x[axis] + g92[axis]
+
+    def tolerance(axis: str) -> float:
+        q = PRINT_HALF_ULP * (1.0 if axis in ROTARY else scale) + g5x_q[axis] + g92_q[axis]
+        return max(TOL_MM, q) + 1e-9
+
+    def set_offsets(target, quant, values):
+        for axis, v in zip(ALL_AXES, values):
+            target[axis] = to_mm(axis, v)
+            quant[axis] = 0.0 if v == 0 else PRINT_HALF_ULP * (1.0 if axis in ROTARY else scale)
+
+    for text in output.splitlines():
+        m = CALL_RE.match(text)
+        if not m:
+            continue
+        nword, call, args = m.group(1), m.group(2), m.group(3)
+        where = text.strip()
+        if call == "COMMENT":
+            body = args.strip().strip('"')
+            if body.startswith(LINE_TAG):
+                line = int(body[len(LINE_TAG):])
+            elif "diameter mode changed to diameter" in body:
+                diameter = True
+            elif "diameter mode changed to radius" in body:
+                diameter = False
+        elif call == "USE_LENGTH_UNITS":
+            if args.strip() not in UNITS_MM:
+                raise ProgramError(f"unknown units {where}")
+            scale = UNITS_MM[args.strip()]
+        elif call == "SET_G5X_OFFSET":
+            set_offsets(g5x, g5x_q, _numbers(args, call, 7)[1:])
+        elif call == "SET_G92_OFFSET":
+            set_offsets(g92, g92_q, _numbers(args, call, 6))
+        elif call == "SELECT_PLANE":
+            if args.strip() not in PLANES:
+                raise ProgramError(f"plane not compared: {where}")
+            plane = PLANES[args.strip()]
+        elif call == "START_SPEED_FEED_SYNCH":
+            synched = True
+        elif call == "STOP_SPEED_FEED_SYNCH":
+            synched = False
+        elif call == "SET_XY_ROTATION":
+            if _numbers(args, call, 1)[0] != 0:
+                raise ProgramError(f"coordinate system rotation is not compared: {where}")
+        elif call == "USE_TOOL_LENGTH_OFFSET":
+            if any(v != 0 for v in _numbers(args, call, 3)):
+                raise ProgramError(f"tool length offsets are not compared: {where}")
+        elif call in UNSUPPORTED_CALLS:
+            raise ProgramError(f"motion not compared: {where}")
+        elif call in ("STRAIGHT_TRAVERSE", "STRAIGHT_FEED", "ARC_FEED"):
+            if diameter_machine and not diameter:
+                raise ProgramError(f"the nckit machine reads X as a diameter but rs274 is in radius "
+                                   f"mode at line {line}: put G7 before the first motion")
+            if call == "ARC_FEED":
+                v = _numbers(args, call, 9)
+                first, second, normal = plane
+                pos = {first: v[0], second: v[1], normal: v[5], "A": v[6], "B": v[7], "C": v[8]}
+                center = {first: machine(first, v[2]), second: machine(second, v[3])}
+                kind, direction = "arc", ("cw" if v[4] < 0 else "ccw")
+                if v[4] == 0:
+                    raise ProgramError(f"arc with zero rotation: {where}")
+            else:
+                v = _numbers(args, call, 6)
+                pos = dict(zip("XYZABC", v[:6]))
+                center, direction = None, None
+                kind = "rapid" if call == "STRAIGHT_TRAVERSE" else ("sync" if synched else "linear")
+            end = {a: machine(a, pos[a]) for a in COMPARED_AXES}
+            motions.append(Motion(kind, end, line, center, direction,
+                                  plane[:2] if kind == "arc" else None,
+                                  {a: tolerance(a) for a in COMPARED_AXES}, where))
+    return motions
+
+
+# ----------------------------------------------------------------------------------------------
+# Checks on the reference itself
+
+def arc_extent(start: dict, mo: Motion, a1: str, a2: str):
+    """Bounding box of an arc on its plane (a1, a2 in the canonical first/second order)."""
+    c1, c2 = mo.center[a1], mo.center[a2]
+    s = math.atan2(start[a2] - c2, start[a1] - c1)
+    e = math.atan2(mo.end[a2] - c2, mo.end[a1] - c1)
+    r = math.hypot(start[a1] - c1, start[a2] - c2)
+    ccw = mo.direction == "ccw"
+    sweep = (e - s) % (2 * math.pi) if ccw else (s - e) % (2 * math.pi)
+    if sweep < 1e-12:
+        sweep = 2 * math.pi  # a full circle
+    pts = [(start[a1], start[a2]), (mo.end[a1], mo.end[a2])]
+    for k in range(4):
+        ang = k * math.pi / 2
+        d = (ang - s) % (2 * math.pi) if ccw else (s - ang) % (2 * math.pi)
+        if d <= sweep:
+            pts.append((c1 + r * math.cos(ang), c2 + r * math.sin(ang)))
+    return ((min(p[0] for p in pts), max(p[0] for p in pts)),
+            (min(p[1] for p in pts), max(p[1] for p in pts)))
+
+
+def check_reference(motions: list[Motion], machine: dict) -> None:
+    """The rs274 side must be self-consistent (arc radii) and stay inside the machine's travel."""
+    travel = {a: t for a, t in machine["axes"].items() if t is not None}
+    pos = {a: 0.0 for a in COMPARED_AXES}  # rs274 starts at the origin of G54 = machine 0 here
+
+    def inside(axis, lo, hi, mo):
+        if axis in travel:
+            tmin, tmax = travel[axis]
+            if lo < tmin - 1e-6 or hi > tmax + 1e-6:
+                raise ProgramError(f"line {mo.line}: {axis} reaches {lo:.4f}..{hi:.4f}, outside the "
+                                   f"travel {tmin:g}..{tmax:g} ({mo.text})")
+
+    for mo in motions:
+        for a in COMPARED_AXES:
+            inside(a, mo.end[a], mo.end[a], mo)
+        if mo.kind == "arc":
+            a1, a2 = mo.plane
+            r_start = math.hypot(pos[a1] - mo.center[a1], pos[a2] - mo.center[a2])
+            r_end = math.hypot(mo.end[a1] - mo.center[a1], mo.end[a2] - mo.center[a2])
+            if abs(r_start - r_end) > 0.01:
+                raise ProgramError(f"line {mo.line}: rs274 arc radius {r_start:.4f} at the start, "
+                                   f"{r_end:.4f} at the end ({mo.text}): harness or program bug")
+            (lo1, hi1), (lo2, hi2) = arc_extent(pos, mo, a1, a2)
+            inside(a1, lo1, hi1, mo)
+            inside(a2, lo2, hi2, mo)
+        pos = dict(mo.end)
+
+
+# ----------------------------------------------------------------------------------------------
+# nckit
+
+def run_nckit(nckit: str, program: Path, machine_file: Path | None, workdir: Path,
+              timeout: float) -> list[dict]:
+    cmd = [nckit, "moves", str(program), "--json"]
+    if machine_file is not None:
+        cmd += ["--machine", str(machine_file)]
+    proc = subprocess.run(cmd, cwd=workdir, stdin=subprocess.DEVNULL, capture_output=True,
+                          text=True, timeout=timeout)
+    if proc.returncode != 0:
+        err = " | ".join(proc.stderr.strip().splitlines()[:3]) or "(no message)"
+        raise AssertionError(f"nckit exit status {proc.returncode}: {err}")
+    records = []
+    for n, text in enumerate(proc.stdout.splitlines(), start=1):
+        if not text.strip():
+            continue
+        try:
+            rec = json.loads(text)
+        except json.JSONDecodeError as e:
+            raise AssertionError(f"nckit output line {n} is not JSON ({e}): {text[:120]}") from None
+        if not isinstance(rec, dict) or rec.get("kind") not in KNOWN_KINDS:
+            raise AssertionError(f"nckit output line {n}: unknown record {text[:120]}")
+        records.append(rec)
+    return records
+
+
+def nckit_motion(rec: dict, index: int) -> Motion:
+    def axes_of(key):
+        obj = rec.get(key)
+        if not isinstance(obj, dict) or not all(isinstance(v, (int, float)) for v in obj.values()):
+            raise AssertionError(f"nckit motion {index}: `{key}` is not an object of numbers: "
+                                 f"{json.dumps(rec)[:160]}")
+        return {k.upper(): float(v) for k, v in obj.items()}
+
+    kind = rec["kind"]
+    mo = Motion(kind, axes_of("end"), rec.get("line"), text=json.dumps(rec))
+    if kind == "arc":
+        mo.center = axes_of("center")
+        mo.direction = rec.get("dir")
+        if mo.direction not in ("cw", "ccw"):
+            raise AssertionError(f"nckit motion {index}: arc `dir` is {mo.direction!r}")
+    return mo
+
+
+# ----------------------------------------------------------------------------------------------
+# Comparison
+
+def source_line(lines: list[str], number) -> str:
+    if isinstance(number, int) and 1 <= number <= len(lines):
+        return f"line {number} `{lines[number - 1].strip()}`"
+    return f"line {number}"
+
+
+def compare(ref: list[Motion], got: list[Motion], machine_axes: set[str],
+            src: list[str], check_lines: bool) -> str | None:
+    """The first difference, or None."""
+    compared = [a for a in COMPARED_AXES if a in machine_axes]
+    for i, (r, g) in enumerate(zip(ref, got), start=1):
+        where = f"motion {i} of {len(ref)}, {source_line(src, r.line if r.line else g.line)}"
+        both = f"\n    nckit:  {g.text}\n    rs274:  {r.text}"
+        if set(g.end) != machine_axes:
+            return f"{where}: nckit `end` has axes {sorted(g.end)}, machine has {sorted(machine_axes)}"
+        if r.kind != g.kind:
+            return f"{where}: kind nckit {g.kind} vs rs274 {r.kind}{both}"
+        for a in compared:
+            if abs(g.end[a] - r.end[a]) > r.tol[a]:
+                return (f"{where}: end {a} nckit {g.end[a]:.6f} vs rs274 {r.end[a]:.6f} "
+                        f"(diff {g.end[a] - r.end[a]:+.6f}, tol {r.tol[a]:.6f}){both}")
+        for a in COMPARED_AXES:
+            if a not in machine_axes and abs(r.end[a]) > r.tol[a]:
+                return (f"{where}: rs274 moves {a} to {r.end[a]:.4f} but the nckit machine has no "
+                        f"{a} axis (program bug){both}")
+        if r.kind == "arc":
+            for a in r.plane:
+                if a not in g.center:
+                    return f"{where}: nckit arc centre lacks {a}{both}"
+                if abs(g.center[a] - r.center[a]) > r.tol[a]:
+                    return (f"{where}: arc centre {a} nckit {g.center[a]:.6f} vs rs274 "
+                            f"{r.center[a]:.6f} (diff {g.center[a] - r.center[a]:+.6f}){both}")
+            if g.direction != r.direction:
+                return f"{where}: arc dir nckit {g.direction} vs rs274 {r.direction}{both}"
+        if check_lines and r.line is not None and g.line != r.line:
+            return f"{where}: source line nckit {g.line} vs rs274 {r.line}{both}"
+    if len(ref) != len(got):
+        more, name = (ref, "rs274") if len(ref) > len(got) else (got, "nckit")
+        extra = more[min(len(ref), len(got))]
+        return (f"motion count nckit {len(got)} vs rs274 {len(ref)}; first extra {name} motion "
+                f"({source_line(src, extra.line)}): {extra.text}")
+    return None
+
+
+def drop_zero_length(motions: list[Motion], tol: float = 1e-6) -> list[Motion]:
+    """Straight moves that go nowhere (e.g. G91 G28 Z0's intermediate point); arcs stay (full
+    circles end where they start)."""
+    out, prev = [], None
+    for mo in motions:
+        if (mo.kind != "arc" and prev is not None
+                and all(abs(mo.end[a] - prev[a]) <= tol for a in mo.end if a in prev)):
+            continue
+        out.append(mo)
+        prev = mo.end
+    return out
+
+
+@dataclass
+class Reference:
+    motions: list[Motion]
+    machine: dict
+    machine_file: Path | None
+
+
+def reference(program: Path, rs274: str, machines_dir: Path, workdir: Path,
+              timeout: float) -> Reference:
+    machine_file = machine_for(program, machines_dir)
+    if machine_file is not None and not machine_file.is_file():
+        raise ProgramError(f"machine file {machine_file} does not exist")
+    machine = load_machine(machine_file) if machine_file else DEFAULT_MILL
+    plain = run_rs274(rs274, program, workdir, timeout)
+    tagged_path = workdir / ("tagged_" + program.name)
+    tagged_path.write_text(annotate(program.read_text(encoding="utf-8", errors="replace")))
+    tagged = run_rs274(rs274, tagged_path, workdir, timeout)
+    motions = parse_rs274(tagged, machine["diameter_mode"])
+    untagged = parse_rs274(plain, machine["diameter_mode"])
+    if [(m.kind, m.end, m.center, m.direction) for m in motions] != \
+       [(m.kind, m.end, m.center, m.direction) for m in untagged]:
+        raise ProgramError("harness: the line-number comments changed rs274's motions")
+    check_reference(motions, machine)
+    return Reference(motions, machine, machine_file)
+
+
+def expected_json(ref: Reference) -> str:
+    """rs274's motions written the way `nckit moves --json` should write them."""
+    axes = list(ref.machine["axes"]) or list(COMPARED_AXES)
+    rows = []
+    for mo in ref.motions:
+        rec = {"line": mo.line, "kind": mo.kind,
+               "end": {a: round(mo.end[a], 6) for a in axes if a in mo.end}}
+        if mo.kind == "arc":
+            rec["center"] = {a: round(mo.center[a], 6) for a in mo.plane}
+            rec["dir"] = mo.direction
+        rows.append(json.dumps(rec))
+    return "\n".join(rows)
+
+
+def run_program(program: Path, args, workdir: Path) -> tuple[bool, str]:
+    try:
+        ref = reference(program, args.rs274, args.machines, workdir, args.timeout)
+    except ProgramError as e:
+        return False, f"FAIL {program.stem}: program: {e}"
+    except subprocess.TimeoutExpired:
+        return False, f"FAIL {program.stem}: rs274 timed out"
+    try:
+        records = run_nckit(args.nckit, program, ref.machine_file, workdir, args.timeout)
+        got = [nckit_motion(r, i) for i, r in enumerate(records, start=1)
+               if r["kind"] in COMPARED_KINDS]
+    except AssertionError as e:
+        return False, f"FAIL {program.stem}: {e}"
+    except subprocess.TimeoutExpired:
+        return False, f"FAIL {program.stem}: nckit timed out"
+    machine_axes = set(ref.machine["axes"]) or (set(got[0].end) if got else {"X", "Y", "Z"})
+    motions = ref.motions
+    if args.skip_zero_length:
+        motions, got = drop_zero_length(motions), drop_zero_length(got)
+    src = program.read_text(encoding="utf-8", errors="replace").splitlines()
+    diff = compare(motions, got, machine_axes, src, not args.ignore_lines)
+    if diff:
+        return False, f"FAIL {program.stem}: {diff}"
+    return True, f"ok {program.stem} ({len(motions)} moves)"
+
+
+def select_programs(directory: Path, names: list[str]) -> list[Path]:
+    programs = sorted(directory.glob("*.ngc"))
+    if not names:
+        return programs
+    chosen = []
+    for name in names:
+        hits = [p for p in programs if p.name == name or p.stem == name
+                or p.stem.startswith(name + "_")]
+        if not hits:
+            sys.exit(f"error: no program {name!r} in {directory}")
+        chosen += [h for h in hits if h not in chosen]
+    return chosen
+
+
+def main() -> int:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("names", nargs="*", help="programs to run (file name, stem or NN prefix)")
+    ap.add_argument("--nckit", default=str(DEFAULT_NCKIT), help="nckit binary (%(default)s)")
+    ap.add_argument("--rs274", default=None, help="LinuxCNC rs274 binary (default: from PATH)")
+    ap.add_argument("--programs", type=Path, default=Path(__file__).resolve().parent,
+                    help="folder of NN_name.ngc programs (default: this script's folder)")
+    ap.add_argument("--machines", type=Path, default=DEFAULT_MACHINES,
+                    help="folder the nckit-machine comments refer to (%(default)s)")
+    ap.add_argument("--expected", action="store_true",
+                    help="print rs274's motions as nckit-style JSON lines instead of comparing")
+    ap.add_argument("--ignore-lines", action="store_true", help="do not compare source lines")
+    ap.add_argument("--skip-zero-length", action="store_true",
+                    help="drop straight moves of zero length on both sides before comparing")
+    ap.add_argument("--timeout", type=float, default=300.0, help="seconds per run (%(default)s)")
+    args = ap.parse_args()
+
+    rs274 = args.rs274 or shutil.which("rs274")
+    if not rs274 or not os.access(rs274, os.X_OK):
+        print(f"error: LinuxCNC's rs274 not found ({args.rs274 or 'not on PATH'}); "
+              f"run scripts/deps.sh to install linuxcnc-uspace", file=sys.stderr)
+        return 1
+    args.rs274 = rs274
+    if not args.expected and not os.access(args.nckit, os.X_OK):
+        print(f"error: nckit binary {args.nckit} not found or not executable; build it first "
+              f"(make build) or pass --nckit", file=sys.stderr)
+        return 1
+    programs = select_programs(args.programs, args.names)
+    if not programs:
+        print(f"error: no *.ngc programs in {args.programs}", file=sys.stderr)
+        return 1
+
+    passed = failed = 0
+    with tempfile.TemporaryDirectory(prefix="nckit-linuxcnc-") as tmp:
+        for program in programs:
+            workdir = Path(tempfile.mkdtemp(dir=tmp))
+            if args.expected:
+                try:
+                    ref = reference(program, args.rs274, args.machines, workdir, args.timeout)
+                except ProgramError as e:
+                    print(f"FAIL {program.stem}: program: {e}", file=sys.stderr)
+                    failed += 1
+                    continue
+                print(f"# {program.name}")
+                print(expected_json(ref))
+                passed += 1
+                continue
+            ok, message = run_program(program, args, workdir)
+            print(message, flush=True)
+            passed, failed = passed + ok, failed + (not ok)
+    print(f"{passed} passed, {failed} failed", file=sys.stderr if args.expected else sys.stdout)
+    return 0 if failed == 0 else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
