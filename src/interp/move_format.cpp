@@ -1,6 +1,8 @@
 #include "nckit/interp/move_format.hpp"
 
+#include <cmath>
 #include <iterator>
+#include <string_view>
 #include <variant>
 
 #include <fmt/format.h>
@@ -19,22 +21,47 @@ double no_negative_zero(double value, double resolution) {
     return std::abs(value) < resolution / 2 ? 0.0 : value;
 }
 
-void fixed(std::string& out, char prefix, double value) {
-    fmt::format_to(std::back_inserter(out), " {}{:.4f}", prefix, no_negative_zero(value, 1e-4));
+//! Appends `value` with exactly 4 decimals. Written by hand because a move line is four of
+//! these and general float formatting was most of `nckit moves`' time on long programs.
+void append_fixed4(std::string& out, double value) {
+    constexpr double scale = 1e4;
+    if (!(std::abs(value) < 1e14)) {  // huge or not finite: rare, let fmt handle it
+        fmt::format_to(std::back_inserter(out), "{:.4f}", value);
+        return;
+    }
+    auto units = static_cast<long long>(std::llround(value * scale));
+    if (units < 0) {
+        out += '-';
+        units = -units;
+    }
+    char digits[24];
+    int n = 0;
+    for (long long rest = units; n < 5 || rest > 0; rest /= 10) digits[n++] = static_cast<char>('0' + rest % 10);
+    for (int i = n - 1; i >= 4; --i) out += digits[i];
+    out += '.';
+    for (int i = 3; i >= 0; --i) out += digits[i];
+}
+
+void fixed(std::string& out, std::string_view prefix, double value) {
+    out += ' ';
+    out += prefix;
+    append_fixed4(out, no_negative_zero(value, 1e-4));
 }
 
 void axes_text(std::string& out, const AxisVector& p, const MachineConfig& machine) {
     for (std::size_t i = 0; i < axis_count; ++i) {
         auto axis = static_cast<Axis>(i);
-        if (machine.find(axis) != nullptr) fixed(out, letter(axis), p[axis]);
+        const char name[1] = {letter(axis)};
+        if (machine.find(axis) != nullptr) fixed(out, std::string_view(name, 1), p[axis]);
     }
 }
 
 void feed_text(std::string& out, const Feed& feed) {
     if (feed.mode == FeedMode::per_revolution) {
-        fmt::format_to(std::back_inserter(out), " FR{:.4f}", feed.mm_per_rev);
+        out += " FR";
+        append_fixed4(out, feed.mm_per_rev);
     } else {
-        fixed(out, 'F', feed.mm_per_min);
+        fixed(out, "F", feed.mm_per_min);
     }
 }
 
@@ -98,8 +125,8 @@ void append_move_text(std::string& out, const Move& move, const MachineConfig& m
                        axes_text(out, a.to, machine);
                        for (Axis axis : {Axis::X, Axis::Y, Axis::Z}) {
                            if (machine.find(axis) == nullptr) continue;
-                           fmt::format_to(std::back_inserter(out), " C{}{:.4f}", letter(axis),
-                                          no_negative_zero(a.center[axis], 1e-4));
+                           const char name[2] = {'C', letter(axis)};
+                           fixed(out, std::string_view(name, 2), a.center[axis]);
                        }
                        feed_text(out, a.feed);
                    },
