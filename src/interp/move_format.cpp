@@ -184,7 +184,7 @@ void append_move_json(std::string& out, const Move& move, const MachineConfig& m
                        if (io.kind == IoKind::spindle_speed || (io.kind == IoKind::mcode && (io.number == 3 || io.number == 4))) {
                            out += io.constant_surface_speed ? ",\"surface_speed_m_min\":" : ",\"rpm\":";
                            json_number(out, io.value);
-                           if (io.rpm_clamp > 0) {
+                           if (io.constant_surface_speed && io.rpm_clamp > 0) {
                                out += ",\"rpm_clamp\":";
                                json_number(out, io.rpm_clamp);
                            }
