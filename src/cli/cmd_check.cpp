@@ -10,6 +10,7 @@ namespace {
 struct CheckOptions {
     std::string program;
     std::string machine;
+    InterpreterOptions interpreter;
 };
 }  // namespace
 
@@ -18,8 +19,9 @@ void add_check_verb(CLI::App& app, int& exit_status) {
     CLI::App* verb = app.add_subcommand("check", "Check a program: print its errors, exit 0 when clean");
     verb->add_option("FILE", options->program, "NC program")->required();
     verb->add_option("--machine", options->machine, "machine config (TOML); default: built-in 3-axis mill");
+    verb->add_flag("--block-delete", options->interpreter.block_delete, "skip blocks that start with \'/\'");
     verb->callback([options, &exit_status] {
-        auto interpreter = open_program_or_report(options->program, options->machine);
+        auto interpreter = open_program_or_report(options->program, options->machine, options->interpreter);
         if (!interpreter) {
             exit_status = exit_bad_input;
             return;

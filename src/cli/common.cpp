@@ -24,7 +24,8 @@ std::optional<MachineConfig> load_machine_or_report(const std::string& path) {
 }
 
 std::optional<Interpreter> open_program_or_report(const std::string& program_path,
-                                                  const std::string& machine_path) {
+                                                  const std::string& machine_path,
+                                                  const InterpreterOptions& options) {
     auto machine = load_machine_or_report(machine_path);
     if (!machine) return std::nullopt;
     auto source = ProgramSource::open(program_path);
@@ -32,7 +33,7 @@ std::optional<Interpreter> open_program_or_report(const std::string& program_pat
         print_diagnostics(source.diagnostics());
         return std::nullopt;
     }
-    return Interpreter(std::move(*machine), std::move(source).value());
+    return Interpreter(std::move(*machine), std::move(source).value(), options);
 }
 
 }  // namespace nckit::cli

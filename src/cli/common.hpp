@@ -19,6 +19,7 @@ void print_diagnostics(const Diagnostics& diagnostics);
 
 //! An interpreter over FILE on MACHINE; errors are printed.
 [[nodiscard]] std::optional<Interpreter> open_program_or_report(const std::string& program_path,
-                                                                const std::string& machine_path);
+                                                                const std::string& machine_path,
+                                                                const InterpreterOptions& options);
 
 }  // namespace nckit::cli

@@ -10,7 +10,9 @@
 namespace nckit {
 
 struct InterpreterOptions {
-    bool block_delete = true;  //!< skip blocks that start with '/' (the operator's switch)
+    //! The operator's block delete switch: when on, blocks that start with '/' are skipped.
+    //! Off by default, as on a Fanuc control at power-on and in LinuxCNC's rs274.
+    bool block_delete = false;
     //! An arc whose end lies off its circle by more than this (and by more than 0.1 % of the
     //! radius) is an error, as in LinuxCNC.
     double arc_radius_tolerance_mm = 0.01;
