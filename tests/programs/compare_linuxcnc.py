@@ -1,10 +1,12 @@
 #!/usr/bin/env python3
 """Side-by-side test of `nckit moves --json` against LinuxCNC's standalone interpreter `rs274`.
 
-For every program (`NN_name.ngc`) it runs `rs274 -b -g` (block delete on) and `nckit moves --json`,
-turns rs274's canonical calls into absolute machine positions in mm, and compares the motions in
-order: kind, end point on every axis both sides have (X Y Z, and A B C on machines that have them),
-each arc's centre on the two plane axes and its direction, and the source line of each motion.
+For every program (`NN_name.ngc`) it runs `rs274 -g` and `nckit moves --json`, turns rs274's
+canonical calls into absolute machine positions in mm, and compares the motions in order: kind,
+end point on every axis both sides have (X Y Z, and A B C on machines that have them), each arc's
+centre on the two plane axes and its direction, the feed rate of feeds and arcs (mm/min; under
+G95 mm/rev x the commanded rpm), and the source line of each motion. Dwells, I/O events and the
+feed of rapids are not compared.
 
 How rs274's output is read (LinuxCNC 2.9):
 - STRAIGHT_TRAVERSE / STRAIGHT_FEED (x, y, z, a, b, c[, u, v, w]) and ARC_FEED (first_end,
@@ -19,8 +21,10 @@ How rs274's output is read (LinuxCNC 2.9):
   with a `(nckit-line N)` comment at the end of every line, which rs274 echoes as COMMENT() before
   the block's motions. Both runs must give the same motions.
 
-A program may name the nckit machine file in a comment in its first lines:
-`( nckit-machine: lathe.toml )`, resolved against examples/machines/.
+Comments in a program's first 5 lines can set up the run:
+- `( nckit-machine: lathe.toml )`: the nckit machine file, resolved against examples/machines/;
+- `( nckit-block-delete: on )`: skip `/` blocks (rs274 -b, nckit --block-delete); both skip
+  nothing by default.
 
 Exit status: 0 when every program matches, 1 otherwise (and when rs274 or nckit is missing).
 """
@@ -68,7 +72,7 @@ DEFAULT_MILL = {"axes": {"X": (-500.0, 500.0), "Y": (-500.0, 500.0), "Z": (-500.
                 "diameter_mode": False}
 
 CALL_RE = re.compile(r"^\s*\d+\s+N(\S*)\s+([A-Z_][A-Z0-9_]*)\((.*)\)\s*$")
-MACHINE_RE = re.compile(r"nckit-machine\s*:\s*([^\s)]+)", re.IGNORECASE)
+DIRECTIVE_RE = re.compile(r"nckit-(machine|block-delete)\s*:\s*([^\s)]+)", re.IGNORECASE)
 
 
 class ProgramError(Exception):
@@ -85,6 +89,8 @@ class Motion:
     plane: tuple[str, str] | None = None       # arcs (rs274 side): first and second plane axes
     tol: dict[str, float] = field(default_factory=dict)  # axis -> tolerance, mm (deg)
     text: str = ""                             # what produced it, for messages
+    feed_mm_min: float | None = None           # feeds and arcs; G95 as mm/rev x rpm
+    feed_tol: float = 0.0                      # mm/min
 
 
 # ----------------------------------------------------------------------------------------------
@@ -132,8 +138,8 @@ def load_machine(path: Path) -> dict:
         for t in axes:
             if not isinstance(t, dict):
                 continue
-            name = next((t[k] for k in ("name", "axis", "letter", "id") if isinstance(t.get(k), str)),
-                        None)
+            name = next((t[k] for k in ("name", "axis", "letter", "id")
+                         if isinstance(t.get(k), str)), None)
             if name and name.upper() in ALL_AXES and len(name) == 1:
                 info["axes"][name.upper()] = _axis_travel(t)
     elif isinstance(axes, dict):
@@ -147,14 +153,25 @@ def load_machine(path: Path) -> dict:
     return info
 
 
-def machine_for(program: Path, machines_dir: Path) -> Path | None:
-    """The machine file a program asks for in a comment in its first lines."""
+@dataclass
+class Setup:
+    machine_file: Path | None = None   # None: nckit's built-in mill
+    block_delete: bool = False
+
+
+def setup_of(program: Path, machines_dir: Path) -> Setup:
+    """What the `nckit-...:` comments in a program's first lines ask for."""
+    setup = Setup()
     with open(program, encoding="utf-8", errors="replace") as f:
         for _, text in zip(range(5), f):
-            m = MACHINE_RE.search(text)
-            if m:
-                return machines_dir / m.group(1)
-    return None
+            for key, value in DIRECTIVE_RE.findall(text):
+                if key.lower() == "machine":
+                    setup.machine_file = machines_dir / value
+                elif value.lower() in ("on", "off"):
+                    setup.block_delete = value.lower() == "on"
+                else:
+                    raise ProgramError(f"nckit-block-delete: {value!r} is neither on nor off")
+    return setup
 
 
 # ----------------------------------------------------------------------------------------------
@@ -184,15 +201,17 @@ def annotate(source: str) -> str:
     return "\n".join(out) + "\n"
 
 
-def run_rs274(rs274: str, program: Path, workdir: Path, timeout: float) -> str:
+def run_rs274(rs274: str, program: Path, block_delete: bool, workdir: Path,
+              timeout: float) -> str:
     """rs274's canonical calls for a program. It runs in a scratch folder because it rewrites its
-    parameter file at exit; `-b` turns block delete on (it is off by default in rs274)."""
-    proc = subprocess.run([rs274, "-b", "-g", str(program)], cwd=workdir,
-                          stdin=subprocess.DEVNULL, capture_output=True, text=True,
-                          timeout=timeout)
+    parameter file at exit; `-b` turns block delete on."""
+    cmd = [rs274, *(["-b"] if block_delete else []), "-g", str(program)]
+    proc = subprocess.run(cmd, cwd=workdir, stdin=subprocess.DEVNULL, capture_output=True,
+                          text=True, timeout=timeout)
     if proc.returncode != 0:
         msg = [l for l in proc.stderr.splitlines() if l.strip() and l.strip() != "executing"]
-        raise ProgramError(f"rs274 exit status {proc.returncode}: {' | '.join(msg) or '(no message)'}")
+        raise ProgramError(f"rs274 exit status {proc.returncode}: "
+                           f"{' | '.join(msg) or '(no message)'}")
     return proc.stdout
 
 
@@ -217,6 +236,7 @@ def parse_rs274(output: str, diameter_machine: bool) -> list[Motion]:
     line: int | None = None
     diameter = False
     synched = False
+    feed, per_rev, rpm = 0.0, False, 0.0          # F as printed, G95, commanded rpm
     motions: list[Motion] = []
 
     def to_mm(axis: str, v: float) -> float:
@@ -238,7 +258,7 @@ def parse_rs274(output: str, diameter_machine: bool) -> list[Motion]:
         m = CALL_RE.match(text)
         if not m:
             continue
-        nword, call, args = m.group(1), m.group(2), m.group(3)
+        _, call, args = m.groups()
         where = text.strip()
         if call == "COMMENT":
             body = args.strip().strip('"')
@@ -260,6 +280,12 @@ def parse_rs274(output: str, diameter_machine: bool) -> list[Motion]:
             if args.strip() not in PLANES:
                 raise ProgramError(f"plane not compared: {where}")
             plane = PLANES[args.strip()]
+        elif call == "SET_FEED_RATE":
+            feed = _numbers(args, call, 1)[0]
+        elif call == "SET_FEED_MODE":
+            per_rev = _numbers(args, call, 2)[1] == 1
+        elif call == "SET_SPINDLE_SPEED":
+            rpm = _numbers(args, call, 2)[1]
         elif call == "START_SPEED_FEED_SYNCH":
             synched = True
         elif call == "STOP_SPEED_FEED_SYNCH":
@@ -274,8 +300,8 @@ def parse_rs274(output: str, diameter_machine: bool) -> list[Motion]:
             raise ProgramError(f"motion not compared: {where}")
         elif call in ("STRAIGHT_TRAVERSE", "STRAIGHT_FEED", "ARC_FEED"):
             if diameter_machine and not diameter:
-                raise ProgramError(f"the nckit machine reads X as a diameter but rs274 is in radius "
-                                   f"mode at line {line}: put G7 before the first motion")
+                raise ProgramError(f"the nckit machine reads X as a diameter but rs274 is in "
+                                   f"radius mode at line {line}: put G7 before the first motion")
             if call == "ARC_FEED":
                 v = _numbers(args, call, 9)
                 first, second, normal = plane
@@ -290,9 +316,13 @@ def parse_rs274(output: str, diameter_machine: bool) -> list[Motion]:
                 center, direction = None, None
                 kind = "rapid" if call == "STRAIGHT_TRAVERSE" else ("sync" if synched else "linear")
             end = {a: machine(a, pos[a]) for a in COMPARED_AXES}
-            motions.append(Motion(kind, end, line, center, direction,
-                                  plane[:2] if kind == "arc" else None,
-                                  {a: tolerance(a) for a in COMPARED_AXES}, where))
+            mo = Motion(kind, end, line, center, direction, plane[:2] if kind == "arc" else None,
+                        {a: tolerance(a) for a in COMPARED_AXES}, where)
+            if kind in ("linear", "arc"):
+                factor = scale * (rpm if per_rev else 1.0)
+                mo.feed_mm_min = feed * factor
+                mo.feed_tol = PRINT_HALF_ULP * factor + 1e-6 * mo.feed_mm_min + 1e-9
+            motions.append(mo)
     return motions
 
 
@@ -328,8 +358,8 @@ def check_reference(motions: list[Motion], machine: dict) -> None:
         if axis in travel:
             tmin, tmax = travel[axis]
             if lo < tmin - 1e-6 or hi > tmax + 1e-6:
-                raise ProgramError(f"line {mo.line}: {axis} reaches {lo:.4f}..{hi:.4f}, outside the "
-                                   f"travel {tmin:g}..{tmax:g} ({mo.text})")
+                raise ProgramError(f"line {mo.line}: {axis} reaches {lo:.4f}..{hi:.4f}, outside "
+                                   f"the travel {tmin:g}..{tmax:g} ({mo.text})")
 
     for mo in motions:
         for a in COMPARED_AXES:
@@ -350,11 +380,13 @@ def check_reference(motions: list[Motion], machine: dict) -> None:
 # ----------------------------------------------------------------------------------------------
 # nckit
 
-def run_nckit(nckit: str, program: Path, machine_file: Path | None, workdir: Path,
+def run_nckit(nckit: str, program: Path, setup: Setup, workdir: Path,
               timeout: float) -> list[dict]:
     cmd = [nckit, "moves", str(program), "--json"]
-    if machine_file is not None:
-        cmd += ["--machine", str(machine_file)]
+    if setup.machine_file is not None:
+        cmd += ["--machine", str(setup.machine_file)]
+    if setup.block_delete:
+        cmd.append("--block-delete")
     proc = subprocess.run(cmd, cwd=workdir, stdin=subprocess.DEVNULL, capture_output=True,
                           text=True, timeout=timeout)
     if proc.returncode != 0:
@@ -384,6 +416,8 @@ def nckit_motion(rec: dict, index: int) -> Motion:
 
     kind = rec["kind"]
     mo = Motion(kind, axes_of("end"), rec.get("line"), text=json.dumps(rec))
+    if isinstance(rec.get("feed_mm_min"), (int, float)):
+        mo.feed_mm_min = float(rec["feed_mm_min"])
     if kind == "arc":
         mo.center = axes_of("center")
         mo.direction = rec.get("dir")
@@ -402,14 +436,15 @@ def source_line(lines: list[str], number) -> str:
 
 
 def compare(ref: list[Motion], got: list[Motion], machine_axes: set[str],
-            src: list[str], check_lines: bool) -> str | None:
+            src: list[str], check_lines: bool, check_feed: bool) -> str | None:
     """The first difference, or None."""
     compared = [a for a in COMPARED_AXES if a in machine_axes]
     for i, (r, g) in enumerate(zip(ref, got), start=1):
         where = f"motion {i} of {len(ref)}, {source_line(src, r.line if r.line else g.line)}"
         both = f"\n    nckit:  {g.text}\n    rs274:  {r.text}"
         if set(g.end) != machine_axes:
-            return f"{where}: nckit `end` has axes {sorted(g.end)}, machine has {sorted(machine_axes)}"
+            return (f"{where}: nckit `end` has axes {sorted(g.end)}, "
+                    f"machine has {sorted(machine_axes)}")
         if r.kind != g.kind:
             return f"{where}: kind nckit {g.kind} vs rs274 {r.kind}{both}"
         for a in compared:
@@ -429,6 +464,10 @@ def compare(ref: list[Motion], got: list[Motion], machine_axes: set[str],
                             f"{r.center[a]:.6f} (diff {g.center[a] - r.center[a]:+.6f}){both}")
             if g.direction != r.direction:
                 return f"{where}: arc dir nckit {g.direction} vs rs274 {r.direction}{both}"
+        if check_feed and r.feed_mm_min is not None and (
+                g.feed_mm_min is None or abs(g.feed_mm_min - r.feed_mm_min) > r.feed_tol):
+            return (f"{where}: feed_mm_min nckit {g.feed_mm_min} vs rs274 "
+                    f"{r.feed_mm_min:.4f}{both}")
         if check_lines and r.line is not None and g.line != r.line:
             return f"{where}: source line nckit {g.line} vs rs274 {r.line}{both}"
     if len(ref) != len(got):
@@ -456,26 +495,26 @@ def drop_zero_length(motions: list[Motion], tol: float = 1e-6) -> list[Motion]:
 class Reference:
     motions: list[Motion]
     machine: dict
-    machine_file: Path | None
+    setup: Setup
 
 
 def reference(program: Path, rs274: str, machines_dir: Path, workdir: Path,
               timeout: float) -> Reference:
-    machine_file = machine_for(program, machines_dir)
-    if machine_file is not None and not machine_file.is_file():
-        raise ProgramError(f"machine file {machine_file} does not exist")
-    machine = load_machine(machine_file) if machine_file else DEFAULT_MILL
-    plain = run_rs274(rs274, program, workdir, timeout)
+    setup = setup_of(program, machines_dir)
+    if setup.machine_file is not None and not setup.machine_file.is_file():
+        raise ProgramError(f"machine file {setup.machine_file} does not exist")
+    machine = load_machine(setup.machine_file) if setup.machine_file else DEFAULT_MILL
+    plain = run_rs274(rs274, program, setup.block_delete, workdir, timeout)
     tagged_path = workdir / ("tagged_" + program.name)
     tagged_path.write_text(annotate(program.read_text(encoding="utf-8", errors="replace")))
-    tagged = run_rs274(rs274, tagged_path, workdir, timeout)
+    tagged = run_rs274(rs274, tagged_path, setup.block_delete, workdir, timeout)
     motions = parse_rs274(tagged, machine["diameter_mode"])
     untagged = parse_rs274(plain, machine["diameter_mode"])
     if [(m.kind, m.end, m.center, m.direction) for m in motions] != \
        [(m.kind, m.end, m.center, m.direction) for m in untagged]:
         raise ProgramError("harness: the line-number comments changed rs274's motions")
     check_reference(motions, machine)
-    return Reference(motions, machine, machine_file)
+    return Reference(motions, machine, setup)
 
 
 def expected_json(ref: Reference) -> str:
@@ -500,7 +539,7 @@ def run_program(program: Path, args, workdir: Path) -> tuple[bool, str]:
     except subprocess.TimeoutExpired:
         return False, f"FAIL {program.stem}: rs274 timed out"
     try:
-        records = run_nckit(args.nckit, program, ref.machine_file, workdir, args.timeout)
+        records = run_nckit(args.nckit, program, ref.setup, workdir, args.timeout)
         got = [nckit_motion(r, i) for i, r in enumerate(records, start=1)
                if r["kind"] in COMPARED_KINDS]
     except AssertionError as e:
@@ -512,8 +551,10 @@ def run_program(program: Path, args, workdir: Path) -> tuple[bool, str]:
     if args.skip_zero_length:
         motions, got = drop_zero_length(motions), drop_zero_length(got)
     src = program.read_text(encoding="utf-8", errors="replace").splitlines()
-    diff = compare(motions, got, machine_axes, src, not args.ignore_lines)
+    diff = compare(motions, got, machine_axes, src, not args.ignore_lines, args.feed)
     if diff:
+        if len(motions) != len(got) and not diff.startswith("motion count"):
+            diff += f"\n    (motion count nckit {len(got)} vs rs274 {len(motions)})"
         return False, f"FAIL {program.stem}: {diff}"
     return True, f"ok {program.stem} ({len(motions)} moves)"
 
@@ -544,6 +585,8 @@ def main() -> int:
     ap.add_argument("--expected", action="store_true",
                     help="print rs274's motions as nckit-style JSON lines instead of comparing")
     ap.add_argument("--ignore-lines", action="store_true", help="do not compare source lines")
+    ap.add_argument("--no-feed", dest="feed", action="store_false",
+                    help="do not compare feed_mm_min of feeds and arcs (G95: mm/rev x rpm)")
     ap.add_argument("--skip-zero-length", action="store_true",
                     help="drop straight moves of zero length on both sides before comparing")
     ap.add_argument("--timeout", type=float, default=300.0, help="seconds per run (%(default)s)")
@@ -555,6 +598,12 @@ def main() -> int:
               f"run scripts/deps.sh to install linuxcnc-uspace", file=sys.stderr)
         return 1
     args.rs274 = rs274
+    # nckit and rs274 run in scratch folders: every path handed to them must be absolute.
+    args.programs, args.machines = args.programs.resolve(), args.machines.resolve()
+    if os.sep in args.nckit:
+        args.nckit = str(Path(args.nckit).resolve())
+    else:
+        args.nckit = shutil.which(args.nckit) or args.nckit
     if not args.expected and not os.access(args.nckit, os.X_OK):
         print(f"error: nckit binary {args.nckit} not found or not executable; build it first "
               f"(make build) or pass --nckit", file=sys.stderr)

@@ -10,8 +10,7 @@ HERE = Path(__file__).resolve().parent
 
 def f(v: float) -> str:
     """A coordinate with at most 4 decimals, without trailing zeros ("12.5", "-3.", "0.")."""
-    s = f"{round(v, 4) + 0.0:.4f}".rstrip("0")
-    return s if not s.endswith(".") else s
+    return f"{round(v, 4) + 0.0:.4f}".rstrip("0")  # + 0.0 turns -0.0 into 0.0
 
 
 def write(name: str, lines: list[str]) -> None:
@@ -121,7 +120,8 @@ def surface() -> None:
         else:
             out += [f"G1 X{f(row[0])} Y{f(y)} Z{f(z(row[0], y))}"]
         for k, x in enumerate(row[1:]):
-            out.append(f"G1 X{f(x)} Y{f(y)} Z{f(z(x, y))}" + (" F2000." if j == 0 and k == 0 else ""))
+            feed = " F2000." if j == 0 and k == 0 else ""
+            out.append(f"G1 X{f(x)} Y{f(y)} Z{f(z(x, y))}{feed}")
     out += ["G0 Z25.", "M5", "M30", "%"]
     write("36_surface_raster_3d.ngc", out)
 

@@ -1,0 +1,12 @@
+#!/usr/bin/env bash
+# Runs every benchmark: the in-process Google Benchmark targets, then the side-by-side scripts.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build=build/release
+for target in "$build"/bench/*_bench; do
+  [[ -x $target ]] || continue
+  echo "== $target"
+  "$target" --benchmark_min_time=0.5
+done
+echo "== nckit moves vs LinuxCNC rs274 -g, 1,000,000 G1 blocks"
+bash bench/throughput_vs_linuxcnc.sh "$build/src/nckit"

@@ -1,0 +1,91 @@
+#!/usr/bin/env bash
+# Interpreter throughput, nckit against LinuxCNC: both read the same 1,000,000-line G1 program
+# (a finishing raster over a surface, X Y with 3 decimals, Z with 4, a feed per row) and write
+# their motions to /dev/null. Best wall time and peak RSS of 3 runs each, measured by GNU time.
+#
+# Usage: bench/throughput_vs_linuxcnc.sh [NCKIT_BINARY]   (default build/release/src/nckit)
+# Needs rs274 (linuxcnc-uspace) and /usr/bin/time (package time): scripts/deps.sh installs both.
+set -euo pipefail
+
+repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+nckit=${1:-$repo/build/release/src/nckit}
+runs=3
+rows=1000 cols=1000   # rows x cols = 1,000,000 G1 blocks
+
+die() { echo "throughput_vs_linuxcnc: $*" >&2; exit 1; }
+[[ -x $nckit ]] || die "nckit binary '$nckit' not found: build it (make build) or pass its path"
+nckit=$(cd "$(dirname "$nckit")" && pwd)/$(basename "$nckit")
+rs274=$(command -v rs274) || die "rs274 not on PATH: run scripts/deps.sh (installs linuxcnc-uspace)"
+[[ -x /usr/bin/time ]] || die "/usr/bin/time missing: run scripts/deps.sh (installs time)"
+
+work=$(mktemp -d -t nckit-throughput-XXXXXX)
+trap 'rm -rf "$work"' EXIT
+program=$work/raster_1m.ngc
+
+# Zig-zag rows along X over z = -2 + 1.5 cos(x/18) sin(y/14), 0.2 mm apart, inside X Y 0..200.
+LC_ALL=C awk -v rows=$rows -v cols=$cols 'BEGIN {
+  print "%"
+  print "(finishing raster: " rows " rows of " cols " G1 blocks)"
+  print "G21 G17 G90 G94"
+  print "G64 P0.01"
+  print "S6000 M3"
+  print "G0 X0. Y0. Z5."
+  for (j = 0; j < rows; j++) {
+    y = j * 0.2
+    for (k = 0; k < cols; k++) {
+      i = (j % 2 == 0) ? k : cols - 1 - k
+      x = i * 0.2 + (j % 7) * 0.0125
+      z = -2 + 1.5 * cos(x / 18) * sin(y / 14)
+      if (k == 0) printf "G1 X%.3f Y%.3f Z%.4f F%d\n", x, y, z, 1800 + (j % 5) * 100
+      else        printf "G1 X%.3f Y%.3f Z%.4f\n", x, y, z
+    }
+  }
+  print "G0 Z25."
+  print "M5"
+  print "M30"
+  print "%"
+}' > "$program"
+blocks=$(grep -c '^G1 ' "$program")
+
+# best_of CMD...: runs CMD $runs times in $work (rs274 rewrites its parameter file there), output
+# to /dev/null; prints "best_seconds best_peak_kb".
+best_of() {
+  local best_s="" best_kb="" s kb i
+  for ((i = 0; i < runs; i++)); do
+    if ! (cd "$work" &&
+          /usr/bin/time -f "%e %M" -o "$work/time.txt" "$@" >/dev/null 2>"$work/stderr.txt"); then
+      echo "throughput_vs_linuxcnc: '$*' failed:" >&2
+      grep -v '^executing$' "$work/stderr.txt" | head -5 >&2
+      exit 1
+    fi
+    read -r s kb < <(tail -n 1 "$work/time.txt")
+    if [[ -z $best_s ]] || awk -v a="$s" -v b="$best_s" 'BEGIN { exit !(a < b) }'; then
+      best_s=$s
+    fi
+    if [[ -z $best_kb ]] || ((kb < best_kb)); then best_kb=$kb; fi
+  done
+  echo "$best_s $best_kb"
+}
+
+# Untimed sanity check: both must really turn every block into a motion.
+rs_moves=$(cd "$work" && "$rs274" -g "$program" 2>/dev/null | grep -c 'STRAIGHT_FEED(') || true
+nc_moves=$("$nckit" moves "$program" | wc -l) || die "nckit moves failed on $program"
+((rs_moves >= blocks)) || die "rs274 printed $rs_moves feeds for $blocks G1 blocks"
+((nc_moves >= blocks)) || die "nckit printed $nc_moves lines for $blocks G1 blocks"
+
+rs_best=$(best_of "$rs274" -g "$program")
+nc_best=$(best_of "$nckit" moves "$program")
+read -r rs_s rs_kb <<<"$rs_best"
+read -r nc_s nc_kb <<<"$nc_best"
+
+echo "| program | G1 blocks | rs274 -g time (s) | rs274 peak RSS (MB) | nckit moves time (s)" \
+     "| nckit peak RSS (MB) | speed-up |"
+echo "|---|---:|---:|---:|---:|---:|---:|"
+LC_ALL=C awk -v blocks="$blocks" -v runs=$runs \
+  -v rs_s="$rs_s" -v rs_kb="$rs_kb" -v nc_s="$nc_s" -v nc_kb="$nc_kb" 'BEGIN {
+  speed = (nc_s > 0) ? sprintf("%.2fx", rs_s / nc_s) : "n/a (below timer resolution)"
+  printf "| G1 surface raster | %d | %.2f | %.1f | %.2f | %.1f | %s |\n",
+         blocks, rs_s, rs_kb / 1024, nc_s, nc_kb / 1024, speed
+  printf "\nbest of %d runs each; time ratio rs274/nckit = %s, memory ratio rs274/nckit = %.2f\n",
+         runs, speed, (nc_kb > 0) ? rs_kb / nc_kb : 0
+}'
