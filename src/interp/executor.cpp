@@ -33,6 +33,12 @@ std::uint32_t Executor::column_of(char letter) const {
     return word != nullptr ? word->column : 1;
 }
 
+//! Where a motion error points: the block's G0..G33 word, or column 1 when the mode is modal.
+std::uint32_t Executor::motion_column() const {
+    std::uint32_t column = words_.group_column(ModalGroup::motion);
+    return column != 0 ? column : 1;
+}
+
 void Executor::push(std::vector<Move>& out, decltype(Move::what) what) const {
     std::int64_t n = -1;
     if (const Word* word = words_.word('N')) n = static_cast<std::int64_t>(word->value);
@@ -120,7 +126,6 @@ std::optional<Diagnostic> Executor::set_modes() {
 
 std::optional<Diagnostic> Executor::set_feed_and_spindle(std::vector<Move>& out) {
     if (const Word* f = words_.word('F'); f != nullptr && !(motion_ == g(32) || motion_ == g(33))) {
-        if (f->value < 0) return error(f->column, "bad-value", "feed rate F must not be negative");
         modal_.feed = f->value * modal_.length_factor_mm;
         modal_.feed_set = true;
     }
@@ -177,15 +182,18 @@ void Executor::emit_mcodes(std::vector<Move>& out, bool stopping) {
 
 std::optional<Diagnostic> Executor::dwell(std::vector<Move>& out) {
     if (words_.group(ModalGroup::non_modal) != g(4)) return std::nullopt;
-    double seconds = 0;
-    if (const Word* p = words_.word('P')) {
-        seconds = p->value / 1000.0;  // Fanuc: P is milliseconds (LinuxCNC reads seconds)
-    } else if (const Word* x = words_.word('X')) {
-        seconds = x->value;
-    } else {
+    const Word* time = words_.has('P') ? words_.word('P') : words_.word('X');
+    if (time == nullptr) {
         return error(words_.group_column(ModalGroup::non_modal), "missing-word", "G4 needs P (ms) or X (s)");
     }
-    if (seconds < 0) return error(words_.group_column(ModalGroup::non_modal), "bad-value", "dwell time is negative");
+    double seconds = time->value;
+    // Fanuc: P is milliseconds (LinuxCNC reads seconds). X is seconds, but an X without a decimal
+    // point counts least increments like any X word, and the time increment is 1 ms.
+    bool milliseconds = time->letter == 'P' ||
+                        (!time->has_decimal_point &&
+                         machine_.decimal_point_input == DecimalPointInput::least_increment);
+    if (milliseconds) seconds /= 1000.0;
+    if (seconds < 0) return error(time->column, "bad-value", "dwell time is negative");
     push(out, Dwell{seconds});
     return std::nullopt;
 }

@@ -47,9 +47,11 @@ private:
     [[nodiscard]] bool block_has_axis_words() const;
     [[nodiscard]] Feed current_feed() const;
     [[nodiscard]] double spindle_rpm_at(double work_x_radius_mm) const;
+    [[nodiscard]] double work_x() const;  //!< X of the current position in work coordinates, mm
 
     [[nodiscard]] Diagnostic error(std::uint32_t column, std::string code, std::string message) const;
     [[nodiscard]] std::uint32_t column_of(char letter) const;
+    [[nodiscard]] std::uint32_t motion_column() const;
     void push(std::vector<Move>& out, decltype(Move::what) what) const;
 
     const MachineConfig& machine_;

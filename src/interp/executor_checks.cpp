@@ -131,14 +131,18 @@ std::optional<Diagnostic> Executor::check_words() {
                          "G10 needs P0 (active system) or P1 to P6 (G54 to G59)");
         }
     }
+    // A negative F is a wrong value, not a missing one: say so before the feed check below.
+    // Under G32/G33 F is the lead, which sync() checks.
+    if (const Word* f = words_.word('F'); f != nullptr && f->value < 0 && !is_thread(motion_)) {
+        return error(f->column, "bad-value", "feed rate F must not be negative");
+    }
     const bool arc_offsets = words_.has('I') || words_.has('J') || words_.has('K') || words_.has('R');
     const bool cuts = motion_ == g(1) || (is_arc(motion_) && arc_offsets);
     if (moves && cuts && (block_has_axis_words() || is_arc(motion_))) {
         bool feed_now = words_.has('F') || modal_.feed_set;
         double feed = words_.has('F') ? words_.word('F')->value : modal_.feed;
         if (!feed_now || feed <= 0) {
-            std::uint32_t column = words_.group_column(ModalGroup::motion);
-            return error(column != 0 ? column : 1, "no-feed", "cutting move with no feed rate (F)");
+            return error(motion_column(), "no-feed", "cutting move with no feed rate (F)");
         }
     }
     return std::nullopt;

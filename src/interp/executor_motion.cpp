@@ -46,6 +46,10 @@ double Executor::spindle_rpm_at(double work_x_radius_mm) const {
     return std::min(limit, spindle.surface_speed_m_min / (2.0 * std::numbers::pi * radius_m));
 }
 
+double Executor::work_x() const {
+    return position_[Axis::X] - offsets_.total(modal_.work_system)[Axis::X];
+}
+
 Feed Executor::current_feed() const {
     Feed feed;
     feed.mode = modal_.feed_mode;
@@ -53,8 +57,7 @@ Feed Executor::current_feed() const {
         feed.mm_per_min = modal_.feed;
     } else {
         feed.mm_per_rev = modal_.feed;
-        double work_x = position_[Axis::X] - offsets_.total(modal_.work_system)[Axis::X];
-        feed.mm_per_min = modal_.feed * spindle_rpm_at(work_x);
+        feed.mm_per_min = modal_.feed * spindle_rpm_at(work_x());
     }
     return feed;
 }
@@ -76,8 +79,9 @@ std::optional<Diagnostic> Executor::check_travel(const AxisVector& low, const Ax
 std::optional<Diagnostic> Executor::move(std::vector<Move>& out) {
     GCode non_modal = words_.group(ModalGroup::non_modal);
     if (non_modal == g(28)) return home(out);
+    // G92.1 takes no axis words: check_words() gave any to the motion mode, so they move.
     if (non_modal == g(4) || non_modal == g(10) || non_modal == g(52) || non_modal == g(92) ||
-        non_modal == g(92, 1) || non_modal == g(50) || motion_ == g(80)) {
+        non_modal == g(50) || motion_ == g(80)) {
         return std::nullopt;
     }
     bool arc_offsets = words_.has('I') || words_.has('J') || words_.has('K') || words_.has('R');
@@ -123,7 +127,7 @@ std::optional<Diagnostic> Executor::home(std::vector<Move>& out) {
 std::optional<Diagnostic> Executor::sync(const AxisVector& target, std::vector<Move>& out) {
     const Word* lead_word = words_.has('K') ? words_.word('K') : words_.has('E') ? words_.word('E') : words_.word('F');
     if (lead_word == nullptr) {
-        return error(words_.group_column(ModalGroup::motion), "missing-word",
+        return error(motion_column(), "missing-word",
                      "thread needs its lead (F, E or K, mm per revolution)");
     }
     double lead = offset_value(*lead_word);
@@ -138,7 +142,8 @@ std::optional<Diagnostic> Executor::sync(const AxisVector& target, std::vector<M
     Feed feed;
     feed.mode = FeedMode::per_revolution;
     feed.mm_per_rev = lead;
-    feed.mm_per_min = lead * modal_.spindle.rpm;
+    // Under G96 the speed is the surface speed's rpm at the start, as for G95 feeds.
+    feed.mm_per_min = lead * spindle_rpm_at(work_x());
     push(out, SyncMove{position_, target, feed});
     position_ = target;
     return std::nullopt;
@@ -158,8 +163,6 @@ std::optional<Diagnostic> Executor::arc(GCode motion, const AxisVector& target, 
     double d1 = target[p.first] - position_[p.first];
     double d2 = target[p.second] - position_[p.second];
     double chord = std::hypot(d1, d2);
-    std::uint32_t motion_column = words_.group_column(ModalGroup::motion);
-    if (motion_column == 0) motion_column = 1;
 
     if (const Word* r_word = words_.word('R')) {
         double r = offset_value(*r_word);
@@ -194,10 +197,10 @@ std::optional<Diagnostic> Executor::arc(GCode motion, const AxisVector& target, 
         arc.center[p.second] = position_[p.second] + o2;
         double r0 = arc_start_radius(arc);
         double r1 = arc_end_radius(arc);
-        if (r0 < full_circle_mm) return error(motion_column, "bad-arc", "arc has zero radius");
+        if (r0 < full_circle_mm) return error(motion_column(), "bad-arc", "arc has zero radius");
         double mismatch = std::abs(r1 - r0);
         if (mismatch > options_.arc_radius_tolerance_mm && mismatch > radius_relative_tolerance * r0) {
-            return error(motion_column, "bad-arc",
+            return error(motion_column(), "bad-arc",
                          fmt::format("end point is not on the arc: radius {:.4f} mm at the start, "
                                      "{:.4f} mm at the end", r0, r1));
         }

@@ -23,13 +23,19 @@ double no_negative_zero(double value, double resolution) {
 
 //! Appends `value` with exactly 4 decimals. Written by hand because a move line is four of
 //! these and general float formatting was most of `nckit moves`' time on long programs.
+//! It must print what `{:.4f}` prints, which rounds the exact binary value: 2.00005 is stored
+//! just below ...05 and prints 2.0000, though 2.00005 * 1e4 rounds to 20000.5.
 void append_fixed4(std::string& out, double value) {
     constexpr double scale = 1e4;
-    if (!(std::abs(value) < 1e14)) {  // huge or not finite: rare, let fmt handle it
+    // Below 1e8 the product is off the exact one by under 1e-4 units, so its rounding is right
+    // unless it lies within 1e-3 of a tie; huge, non-finite and near-tie values go to fmt.
+    const double scaled = value * scale;
+    const double fraction = std::abs(scaled - std::trunc(scaled));
+    if (!(std::abs(value) < 1e8) || std::abs(fraction - 0.5) < 1e-3) {
         fmt::format_to(std::back_inserter(out), "{:.4f}", value);
         return;
     }
-    auto units = static_cast<long long>(std::llround(value * scale));
+    auto units = static_cast<long long>(std::llround(scaled));
     if (units < 0) {
         out += '-';
         units = -units;
