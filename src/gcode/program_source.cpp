@@ -109,7 +109,7 @@ Result<std::optional<ProgramSource::Line>> ProgramSource::next() {
 }
 
 void ProgramSource::seek(std::uint64_t offset, std::uint32_t line_number) {
-    line_number_ = line_number - 1;
+    line_number_ = line_number > 0 ? line_number - 1 : 0;
     if (file_ == nullptr) {
         begin_ = static_cast<std::size_t>(offset);
         return;

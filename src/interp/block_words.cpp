@@ -8,6 +8,8 @@ namespace nckit::interp {
 
 namespace {
 
+constexpr double largest_code_number = 99999999;
+
 std::string g_name(GCode code) {
     return code % 10 == 0 ? fmt::format("G{}", code / 10) : fmt::format("G{}.{}", code / 10, code % 10);
 }
@@ -63,14 +65,29 @@ bool BlockWords::has_m(int code) const {
     return false;
 }
 
+namespace {
+//! Code words (M N O T) hold whole numbers of at most 8 digits; checked before any cast to int.
+bool is_code_number(double value) {
+    return value >= 0 && value <= largest_code_number && value == std::floor(value);
+}
+}  // namespace
+
 std::optional<Diagnostic> collect_words(const Block& block, BlockWords& out) {
     out = BlockWords{};
     for (const Word& word : block.words) {
         auto at = [&] { return block.at_column(word.column); };
+        bool code_letter = word.letter == 'M' || word.letter == 'N' || word.letter == 'O' || word.letter == 'T';
+        if (code_letter && !is_code_number(word.value)) {
+            return error_at(at(), "bad-value", fmt::format("{} must be a whole number from 0 to {}", word.letter,
+                                                           static_cast<long>(largest_code_number)));
+        }
         if (word.letter == 'G') {
+            if (word.value < 0 || word.value >= 1000) {
+                return error_at(at(), "unknown-gcode", fmt::format("G{} is not a G code", word.value));
+            }
             double tenths = word.value * 10.0;
             auto code = static_cast<GCode>(std::lround(tenths));
-            if (word.value < 0 || std::abs(tenths - code) > 1e-6) {
+            if (std::abs(tenths - code) > 1e-6) {
                 return error_at(at(), "unknown-gcode", fmt::format("G{} is not a G code", word.value));
             }
             auto group = group_of(code);
@@ -86,10 +103,7 @@ std::optional<Diagnostic> collect_words(const Block& block, BlockWords& out) {
             }
             slot = GWord{code, word.column};
         } else if (word.letter == 'M') {
-            auto code = static_cast<int>(std::lround(word.value));
-            if (word.value < 0 || std::abs(word.value - code) > 1e-9) {
-                return error_at(at(), "unknown-mcode", fmt::format("M{} is not an M code", word.value));
-            }
+            auto code = static_cast<int>(word.value);
             for (std::size_t i = 0; i < out.mcode_count; ++i) {
                 if (m_conflict(out.mcodes[i].code, code)) {
                     return error_at(at(), "modal-conflict",

@@ -22,6 +22,10 @@ Executor::Executor(const MachineConfig& machine, const InterpreterOptions& optio
         position_[axis.axis] = axis.home;
     }
     modal_.diameter_mode = machine.diameter_mode;
+    // A lathe (X and Z, no Y) starts in its only useful plane, as Fanuc lathe controls do.
+    if (configured_.contains(Axis::X) && configured_.contains(Axis::Z) && !configured_.contains(Axis::Y)) {
+        modal_.plane = Plane::zx;
+    }
 }
 
 Diagnostic Executor::error(std::uint32_t column, std::string code, std::string message) const {

@@ -64,6 +64,12 @@ std::optional<Diagnostic> Executor::check_words() {
         return error(words_.group_column(ModalGroup::non_modal), "bad-combination",
                      "G53 moves only with G0 or G1");
     }
+    const GCode distance = words_.group(ModalGroup::distance);
+    if (non_modal == g(53) && (distance == g(91) || (distance < 0 && modal_.incremental))) {
+        // Machine coordinates are absolute by nature; reading them as increments would surprise.
+        return error(words_.group_column(ModalGroup::non_modal), "bad-combination",
+                     "G53 needs absolute mode (G90)");
+    }
     const bool moves = !dwell && !axes_for_setting && motion_ != g(80);
 
     for (const Word& word : block_->words) {

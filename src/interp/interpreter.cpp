@@ -5,6 +5,13 @@
 
 namespace nckit {
 
+namespace {
+bool starts_with_block_delete(std::string_view line) {
+    std::size_t i = line.find_first_not_of(" \t");
+    return i != std::string_view::npos && line[i] == '/';
+}
+}  // namespace
+
 struct Interpreter::State {
     State(MachineConfig m, ProgramSource s, InterpreterOptions o)
         : machine(std::move(m)), source(std::move(s)), options(o), executor(machine, options) {}
@@ -49,6 +56,10 @@ std::optional<InterpResult> Interpreter::State::fill() {
         if (!line) return InterpResult(line.diagnostics().front());
         if (!line.value()) return InterpResult(ProgramEnd{});
         const ProgramSource::Line& text = **line;
+        if (options.block_delete && starts_with_block_delete(text.text)) {
+            seen_block = true;
+            continue;  // skipped unread: a deleted block is not part of the program
+        }
         block.location = make_location(source.file(), text.number, 1);
         if (auto error = parse_block(text.text, block)) return InterpResult(std::move(*error));
         if (block.tape_mark) {
@@ -59,7 +70,6 @@ std::optional<InterpResult> Interpreter::State::fill() {
         }
         if (block.words.empty()) continue;
         seen_block = true;
-        if (block.block_delete && options.block_delete) continue;
         bool program_end = false;
         if (auto error = executor.run(block, pending, program_end)) return InterpResult(std::move(*error));
         if (program_end) {

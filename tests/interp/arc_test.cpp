@@ -192,3 +192,25 @@ TEST(ArcTravel, HalfCircleBulgeOnAnAxisWithoutAWord) {
 
 }  // namespace
 }  // namespace nckit::test
+
+namespace nckit::test {
+namespace {
+
+TEST(ArcPlane, LatheStartsInTheZXPlane) {
+    // No G18 needed on a lathe: I and K name the centre as on a Fanuc lathe control.
+    std::vector<Move> moves = moves_of("G0 X20 Z0\nG2 X20 Z-10 K-5 F100\n", lathe());
+    ASSERT_EQ(moves.size(), 2U);
+    const Arc& arc = std::get<Arc>(moves[1].what);
+    EXPECT_EQ(arc.plane, Plane::zx);
+    EXPECT_DOUBLE_EQ(arc.center[Axis::Z], -5.0);
+    EXPECT_DOUBLE_EQ(arc.center[Axis::X], 10.0);
+}
+
+TEST(ArcPlane, MillStartsInTheXYPlane) {
+    std::vector<Move> moves = moves_of("G2 X10 Y0 I5 F100\n");
+    ASSERT_EQ(moves.size(), 1U);
+    EXPECT_EQ(std::get<Arc>(moves[0].what).plane, Plane::xy);
+}
+
+}  // namespace
+}  // namespace nckit::test

@@ -43,11 +43,19 @@ TEST(BlockErrors, TwoGCodesOfOneModalGroup) {
     EXPECT_EQ(error_where("G1 G1 X1 F1\n"), "modal-conflict 1:4");
 }
 
-TEST(BlockErrors, NegativeOrOddMCodeIsUnknown) {
+TEST(BlockErrors, NegativeOrOddMCodeIsABadValue) {
     Diagnostic d = error_of("M-3\n");
-    EXPECT_EQ(where(d), "unknown-mcode 1:1");
-    EXPECT_EQ(d.message, "M-3 is not an M code");
-    EXPECT_EQ(error_where("S100 M3.5\n"), "unknown-mcode 1:6");
+    EXPECT_EQ(where(d), "bad-value 1:1");
+    EXPECT_EQ(d.message, "M must be a whole number from 0 to 99999999");
+    EXPECT_EQ(error_where("S100 M3.5\n"), "bad-value 1:6");
+}
+
+TEST(BlockErrors, CodeWordsOutOfRangeAreBadValues) {
+    EXPECT_EQ(error_where("M3000000000\n"), "bad-value 1:1");
+    EXPECT_EQ(error_where("T123456789\n"), "bad-value 1:1");
+    EXPECT_EQ(error_where("N1.5 G0 X1\n"), "bad-value 1:1");
+    EXPECT_EQ(error_where("G0 X1 T-1\n"), "bad-value 1:7");
+    EXPECT_EQ(error_where("G1000 X1\n"), "unknown-gcode 1:1");
 }
 
 TEST(BlockErrors, TwoMCodesOfOneGroup) {

@@ -90,6 +90,12 @@ TEST(BlockDelete, SkippedBlockIsNotInterpreted) {
     EXPECT_EQ(error_where("/G41 X1\nG0 X1\n"), "unsupported-gcode 1:2");
 }
 
+TEST(BlockDelete, SkippedBlockIsNotEvenParsed) {
+    // A deleted block is not part of the program: a syntax error in it cannot stop the machine.
+    EXPECT_EQ(texts("/G1 X$\nG0 X1\n", default_mill(), block_delete_on()), (Texts{"G0 X1.0000 Y0.0000 Z0.0000"}));
+    EXPECT_EQ(error_where("/G1 X$\nG0 X1\n"), "syntax 1:5");
+}
+
 TEST(BlockDelete, SkippedM30DoesNotEnd) {
     EXPECT_EQ(texts("/M30\nG0 X1\n", default_mill(), block_delete_on()), (Texts{"G0 X1.0000 Y0.0000 Z0.0000"}));
 }
