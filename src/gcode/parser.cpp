@@ -1,9 +1,12 @@
 #include "nckit/gcode/parser.hpp"
 
-#include <charconv>
 #include <cstdint>
 
 #include <fmt/format.h>
+
+#include "decimal.hpp"
+#include "macro_syntax.hpp"
+#include "nckit/gcode/macro_alarms.hpp"
 
 namespace nckit {
 
@@ -38,7 +41,12 @@ public:
                 if (auto error = skip_comment()) return error;
                 continue;
             }
+            if (c == '#' || (is_letter(c) && gcode::at_statement(gcode::Cursor{line_, pos_}))) {
+                if (auto error = parse_statement()) return error;
+                continue;
+            }
             if (is_letter(c)) {
+                if (block_.statement.kind != StatementKind::none) return statement_not_alone(column());
                 if (auto error = parse_word()) return error;
                 continue;
             }
@@ -67,8 +75,11 @@ private:
 
     std::optional<Diagnostic> skip_comment() {
         std::uint32_t open = column();
+        std::size_t text_start = pos_ + 1;
         for (++pos_; pos_ < line_.size(); ++pos_) {
             if (line_[pos_] == ')') {
+                // The first comment is kept: `#3000=1 (MESSAGE)` shows it with the alarm.
+                if (block_.comment.empty()) block_.comment.assign(line_.substr(text_start, pos_ - text_start));
                 ++pos_;
                 return std::nullopt;
             }
@@ -79,11 +90,28 @@ private:
         return error(open, "syntax", "comment is not closed: '(' without ')'");
     }
 
+    Diagnostic statement_not_alone(std::uint32_t col) const {
+        Diagnostic d = error(col, "macro-format", "a macro statement must stand alone in its block");
+        d.alarm = alarm::format;
+        return d;
+    }
+
+    //! A macro statement stands alone in its block, after the N number at most.
+    std::optional<Diagnostic> parse_statement() {
+        std::uint32_t start = column();
+        bool only_n = block_.words.empty() || (block_.words.size() == 1 && block_.words[0].letter == 'N');
+        if (!only_n || block_.statement.kind != StatementKind::none) return statement_not_alone(start);
+        gcode::Cursor cursor{line_, pos_};
+        if (auto error = gcode::parse_statement(cursor, block_)) return error;
+        pos_ = cursor.pos;
+        return std::nullopt;
+    }
+
     std::optional<Diagnostic> unexpected(char c) const {
-        if (c == '#' || c == '[') {
-            return error(column(), "macro",
-                         fmt::format("'{}' starts a macro expression, which this program "
-                                     "cannot use here", c));
+        if (c == '[' || c == ']') {
+            Diagnostic d = error(column(), "macro-format", fmt::format("'{}' out of place", c));
+            d.alarm = alarm::format;
+            return d;
         }
         auto byte = static_cast<unsigned char>(c);
         if (byte < 0x20 || byte >= 0x7f) {
@@ -98,7 +126,14 @@ private:
         word.column = column();
         ++pos_;
         skip_blanks();
-        // Gather sign, digits and point, dropping blanks, into a small buffer for from_chars.
+        if (starts_expression()) {
+            gcode::Cursor cursor{line_, pos_};
+            if (auto error = gcode::parse_word_expression(cursor, block_, word)) return error;
+            pos_ = cursor.pos;
+            block_.words.push_back(word);
+            return std::nullopt;
+        }
+        // Gather sign, digits and point, dropping blanks, into a small buffer.
         char digits[64];
         std::size_t n = 0;
         bool negative = false;
@@ -127,20 +162,24 @@ private:
             digits[n++] = c;
         }
         if (!any_digit) {
-            if (pos_ < line_.size() && (line_[pos_] == '#' || line_[pos_] == '[')) {
-                return unexpected(line_[pos_]);
-            }
             return error(word.column, "syntax",
                          fmt::format("address {} has no number after it", word.letter));
         }
-        double value = 0;
-        auto [end, ec] = std::from_chars(digits, digits + n, value);
-        if (ec != std::errc{} || end != digits + n) {
-            return error(word.column, "syntax", "number out of range");
-        }
-        word.value = negative ? -value : value;
+        std::optional<double> value = gcode::parse_decimal(digits, n);
+        if (!value) return error(word.column, "syntax", "number out of range");
+        word.value = negative ? -*value : *value;
         block_.words.push_back(word);
         return std::nullopt;
+    }
+
+    //! After an address: `#`, `[`, or a sign before either, makes the value an expression.
+    bool starts_expression() const {
+        std::size_t p = pos_;
+        if (p < line_.size() && (line_[p] == '-' || line_[p] == '+')) {
+            ++p;
+            while (p < line_.size() && is_blank(line_[p])) ++p;
+        }
+        return p < line_.size() && (line_[p] == '#' || line_[p] == '[');
     }
 
     std::string_view line_;

@@ -128,3 +128,17 @@ void ProgramSource::seek(std::uint64_t offset, std::uint32_t line_number) {
 }
 
 }  // namespace nckit
+
+namespace nckit {
+
+Result<ProgramSource> ProgramSource::reopen() const {
+    if (file_ == nullptr) return from_string(text_, *name_);
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(*name_, ec)) {
+        return error_at(make_location(name_, 0, 0), "file",
+                        "a program read from a pipe cannot be searched or called into");
+    }
+    return open(*name_);
+}
+
+}  // namespace nckit

@@ -98,6 +98,9 @@ std::optional<Diagnostic> Executor::run(const Block& block, std::vector<Move>& o
     if (auto e = move(out)) return fail(*e);
     emit_mcodes(out, true);
     program_end = words_.has_m(2) || words_.has_m(30);
+    if (program_end) parts_done_ += 1;
+    if (words_.mcode_count > 0) last_mcode_ = words_.mcodes[words_.mcode_count - 1].code;
+    for (std::size_t i = saved_size; i < out.size(); ++i) elapsed_s_ += duration_s(out[i]);
     return std::nullopt;
 }
 

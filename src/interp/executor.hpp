@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "block_words.hpp"
+#include "macro/variables.hpp"
 #include "modal_state.hpp"
 #include "nckit/core/machine.hpp"
 #include "nckit/interp/interpreter.hpp"
@@ -18,6 +19,16 @@ public:
     //! the block has happened and `out` is unchanged. Sets `program_end` on M2/M30.
     [[nodiscard]] std::optional<Diagnostic> run(const Block& block, std::vector<Move>& out,
                                                 bool& program_end);
+
+    // Macro B system variables that describe the machine state (executor_system_variables.cpp):
+    // modal codes #4001-, modal values #4107-, positions #5001-, work offsets #5221-, part counts.
+    [[nodiscard]] std::optional<MacroValue> read_system(std::int64_t number) const;
+    [[nodiscard]] std::optional<SystemVariables::WriteError> write_system(std::int64_t number, double value);
+
+    [[nodiscard]] bool inch_units() const { return modal_.length_factor_mm != 1.0; }
+    //! Simulated time since the start, s: moves at programmed feed (rapids at the axis limits)
+    //! and dwells. The macro timers #3001/#3002 run on it.
+    [[nodiscard]] double elapsed_s() const { return elapsed_s_; }
 
 private:
     // Checks (executor_checks.cpp): nothing changes state.
@@ -53,6 +64,13 @@ private:
     [[nodiscard]] std::uint32_t column_of(char letter) const;
     [[nodiscard]] std::uint32_t motion_column() const;
     void push(std::vector<Move>& out, decltype(Move::what) what) const;
+    [[nodiscard]] double duration_s(const Move& move) const;  //!< for the simulated clock
+
+    // System variable helpers (executor_system_variables.cpp).
+    [[nodiscard]] std::optional<MacroValue> modal_code(int group) const;
+    [[nodiscard]] const AxisConfig* axis_by_number(std::int64_t one_based) const;
+    [[nodiscard]] double to_program_units(Axis axis, double mm) const;
+    [[nodiscard]] double from_program_units(Axis axis, double value) const;
 
     const MachineConfig& machine_;
     InterpreterOptions options_;
@@ -66,6 +84,11 @@ private:
     const Block* block_ = nullptr;  //!< the block being run
     BlockWords words_;
     GCode motion_ = g(80);          //!< motion code for this block (explicit or modal)
+
+    double elapsed_s_ = 0;          //!< simulated time, s
+    int last_mcode_ = 0;            //!< #4113
+    double parts_done_ = 0;         //!< #3901, counted at M2/M30
+    double parts_required_ = 0;     //!< #3902
 };
 
 }  // namespace nckit::interp

@@ -36,16 +36,20 @@ void append_fixed4(std::string& out, double value) {
         return;
     }
     auto units = static_cast<long long>(std::llround(scaled));
-    if (units < 0) {
-        out += '-';
-        units = -units;
-    }
-    char digits[24];
-    int n = 0;
-    for (long long rest = units; n < 5 || rest > 0; rest /= 10) digits[n++] = static_cast<char>('0' + rest % 10);
-    for (int i = n - 1; i >= 4; --i) out += digits[i];
-    out += '.';
-    for (int i = 3; i >= 0; --i) out += digits[i];
+    // Digits are written backwards into a small buffer and appended once.
+    char text[32];
+    char* end = text + sizeof text;
+    char* p = end;
+    bool negative = units < 0;
+    if (negative) units = -units;
+    for (int i = 0; i < 4; ++i, units /= 10) *--p = static_cast<char>('0' + units % 10);
+    *--p = '.';
+    do {
+        *--p = static_cast<char>('0' + units % 10);
+        units /= 10;
+    } while (units > 0);
+    if (negative) *--p = '-';
+    out.append(p, static_cast<std::size_t>(end - p));
 }
 
 void fixed(std::string& out, std::string_view prefix, double value) {

@@ -223,11 +223,9 @@ TEST(Parser, OverlongNumberIsAnError) {
     EXPECT_EQ(error("G0 X" + std::string(70, '1')), "syntax 4: number has too many digits");
 }
 
-TEST(Parser, MacroCharactersGiveTheMacroCode) {
-    EXPECT_EQ(error("#1=5"), "macro 1: '#' starts a macro expression, which this program cannot use here");
-    EXPECT_EQ(error("G1 X#1"), "macro 5: '#' starts a macro expression, which this program cannot use here");
-    EXPECT_EQ(error("G1 X-[1+2]"), "macro 6: '[' starts a macro expression, which this program cannot use here");
-    EXPECT_EQ(error("G1 X1 [2]"), "macro 7: '[' starts a macro expression, which this program cannot use here");
+TEST(Parser, StrayBracketIsAMacroFormatError) {
+    EXPECT_EQ(error("G1 X1 [2]"), "macro-format 7: '[' out of place");
+    EXPECT_EQ(error("G1 X1 ]"), "macro-format 7: ']' out of place");
 }
 
 TEST(Parser, ErrorKeepsTheBlocksFileAndLine) {

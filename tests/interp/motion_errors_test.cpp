@@ -138,8 +138,10 @@ TEST(StreamErrors, SyntaxErrorCarriesItsLineAndColumn) {
     EXPECT_EQ(format_diagnostic(d), "test.ngc:2:7: error: unexpected character '$'");
 }
 
-TEST(StreamErrors, MacroSyntaxIsTheMacroCode) {
-    EXPECT_EQ(error_where("G0 X1\n#1 = 5\n"), "macro 2:1");
+TEST(StreamErrors, MacroFormatErrorCarriesItsAlarm) {
+    Diagnostic d = error_of("G0 X1\n#1 = [5\n");
+    EXPECT_EQ(where(d), "macro-format 2:8");
+    EXPECT_EQ(d.alarm, 114);
 }
 
 TEST(StreamErrors, TooLongLineCarriesItsLine) {

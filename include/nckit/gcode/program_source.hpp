@@ -35,8 +35,16 @@ public:
     //! The next line, nothing at the end of input, or an error (line too long, read failure).
     [[nodiscard]] Result<std::optional<Line>> next();
 
+    //! Where the next line starts, to come back to with seek().
+    [[nodiscard]] std::uint64_t next_offset() const { return buffer_offset_ + begin_; }
+    [[nodiscard]] std::uint32_t next_line_number() const { return line_number_ + 1; }
+
     //! Continue reading at a line returned earlier.
     void seek(std::uint64_t offset, std::uint32_t line_number);
+
+    //! A second, independent reader of the same program from its start (for subprograms in the
+    //! same file). A program read from a pipe cannot be read twice: that is an error.
+    [[nodiscard]] Result<ProgramSource> reopen() const;
 
     [[nodiscard]] const std::shared_ptr<const std::string>& file() const { return name_; }
 

@@ -1,4 +1,6 @@
 #pragma once
+#include <cstdint>
+#include <filesystem>
 #include <memory>
 #include <variant>
 
@@ -16,6 +18,14 @@ struct InterpreterOptions {
     //! An arc whose end lies off its circle by more than this (and by more than 0.1 % of the
     //! radius) is an error, as in LinuxCNC.
     double arc_radius_tolerance_mm = 0.01;
+    //! Where M98/G65 find programs that are not in the program's own file: one file per program,
+    //! named by its number (`O1234.nc`, `1234.ngc`, `O1234`), as in a control's memory.
+    std::filesystem::path library_dir;
+    //! Blocks a program may execute inside loops, after a jump back or in called programs before
+    //! it is stopped as a runaway (alarm 100). A program without jumps is bounded by its length.
+    std::int64_t max_blocks = 10'000'000;
+    //! File that keeps #500-#999 between runs; empty: they start vacant and are not kept.
+    std::filesystem::path retained_file;
 };
 
 //! The program ended: M2, M30, a closing '%', or the end of the file.

@@ -1,0 +1,370 @@
+#include "macro_syntax.hpp"
+
+#include "decimal.hpp"
+#include "nckit/gcode/macro_alarms.hpp"
+
+#include <array>
+#include <utility>
+
+#include <fmt/format.h>
+
+namespace nckit::gcode {
+
+namespace {
+
+bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
+char upper(char c) { return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c; }
+
+constexpr int max_bracket_depth = 5;
+
+struct FunctionName {
+    std::string_view name;
+    ExprFunction function;
+    int arguments;  // 1, or 2 for POW (ATAN takes 1 or 2)
+};
+
+// Longest names first where one is a prefix of another (ATAN before ...).
+constexpr std::array<FunctionName, 17> functions{{
+    {"ASIN", ExprFunction::asin, 1}, {"ACOS", ExprFunction::acos, 1}, {"ATAN", ExprFunction::atan, 1},
+    {"SIN", ExprFunction::sin, 1},   {"COS", ExprFunction::cos, 1},   {"TAN", ExprFunction::tan, 1},
+    {"SQRT", ExprFunction::sqrt, 1}, {"ABS", ExprFunction::abs, 1},   {"ROUND", ExprFunction::round, 1},
+    {"FIX", ExprFunction::fix, 1},   {"FUP", ExprFunction::fup, 1},   {"LN", ExprFunction::ln, 1},
+    {"EXP", ExprFunction::exp, 1},   {"POW", ExprFunction::pow, 2},   {"ADP", ExprFunction::adp, 1},
+    {"BIN", ExprFunction::bin, 1},   {"BCD", ExprFunction::bcd, 1},
+}};
+
+//! Recursive descent over Fanuc's precedence: functions and brackets; * / AND MOD; + - OR XOR;
+//! comparisons.
+class ExpressionParser {
+public:
+    ExpressionParser(Cursor& cursor, Block& block) : c_(cursor), block_(block) {}
+
+    std::optional<Diagnostic> comparison(std::int32_t& out) {
+        if (auto e = sum(out)) return e;
+        static constexpr std::array<std::pair<std::string_view, ExprOp>, 6> ops{{
+            {"EQ", ExprOp::eq}, {"NE", ExprOp::ne}, {"GT", ExprOp::gt},
+            {"GE", ExprOp::ge}, {"LT", ExprOp::lt}, {"LE", ExprOp::le},
+        }};
+        for (const auto& [name, op] : ops) {
+            std::uint32_t column = (c_.skip_blanks(), c_.column());
+            if (!c_.accept_keyword(name)) continue;
+            std::int32_t right = -1;
+            if (auto e = sum(right)) return e;
+            out = add(ExprNode{op, ExprFunction::sin, out, right, 0, column});
+            return std::nullopt;
+        }
+        return std::nullopt;
+    }
+
+    std::optional<Diagnostic> sum(std::int32_t& out) {
+        if (auto e = term(out)) return e;
+        for (;;) {
+            std::uint32_t column = (c_.skip_blanks(), c_.column());
+            ExprOp op;
+            char next = c_.peek();
+            if (next == '+' || next == '-') {
+                ++c_.pos;
+                op = next == '+' ? ExprOp::add : ExprOp::subtract;
+            } else if (c_.accept_keyword("OR")) {
+                op = ExprOp::bit_or;
+            } else if (c_.accept_keyword("XOR")) {
+                op = ExprOp::bit_xor;
+            } else {
+                return std::nullopt;
+            }
+            std::int32_t right = -1;
+            if (auto e = term(right)) return e;
+            out = add(ExprNode{op, ExprFunction::sin, out, right, 0, column});
+        }
+    }
+
+    std::optional<Diagnostic> term(std::int32_t& out) {
+        if (auto e = unary(out)) return e;
+        for (;;) {
+            std::uint32_t column = (c_.skip_blanks(), c_.column());
+            ExprOp op;
+            char next = c_.peek();
+            if (next == '*') {
+                ++c_.pos;
+                op = ExprOp::multiply;
+            } else if (next == '/') {
+                ++c_.pos;
+                op = ExprOp::divide;
+            } else if (c_.accept_keyword("AND")) {
+                op = ExprOp::bit_and;
+            } else if (c_.accept_keyword("MOD")) {
+                op = ExprOp::mod;
+            } else {
+                return std::nullopt;
+            }
+            std::int32_t right = -1;
+            if (auto e = unary(right)) return e;
+            out = add(ExprNode{op, ExprFunction::sin, out, right, 0, column});
+        }
+    }
+
+    std::optional<Diagnostic> unary(std::int32_t& out) {
+        std::uint32_t column = (c_.skip_blanks(), c_.column());
+        char next = c_.peek();
+        if (next == '-' || next == '+') {
+            ++c_.pos;
+            std::int32_t operand = -1;
+            if (auto e = primary(operand)) return e;
+            out = next == '-' ? add(ExprNode{ExprOp::negate, ExprFunction::sin, operand, -1, 0, column}) : operand;
+            return std::nullopt;
+        }
+        return primary(out);
+    }
+
+    std::optional<Diagnostic> primary(std::int32_t& out) {
+        c_.skip_blanks();
+        std::uint32_t column = c_.column();
+        char next = c_.peek();
+        if (next == '#') return variable(out);
+        if (next == '[') return bracketed(out);
+        if (is_digit(next) || next == '.') return number(out);
+        for (const FunctionName& f : functions) {
+            if (c_.accept_keyword(f.name)) return function(f, column, out);
+        }
+        if (c_.at_end()) return format_error(column, "expression ends too early");
+        return format_error(column, fmt::format("unexpected '{}' in an expression", c_.line[c_.pos]));
+    }
+
+    std::optional<Diagnostic> variable(std::int32_t& out) {
+        std::uint32_t column = c_.column();
+        ++c_.pos;  // '#'
+        c_.skip_blanks();
+        char next = c_.peek();
+        if (next == '[') {
+            std::int32_t index = -1;
+            if (auto e = bracketed(index)) return e;
+            out = add(ExprNode{ExprOp::variable, ExprFunction::sin, index, -1, 0, column});
+            return std::nullopt;
+        }
+        if (!is_digit(next)) {
+            return format_error(column, "'#' must be followed by a variable number or '['");
+        }
+        std::int32_t literal = -1;
+        if (auto e = number(literal)) return e;
+        double n = block_.exprs[literal].value;
+        block_.exprs.pop_back();
+        if (n != static_cast<double>(static_cast<std::int64_t>(n))) {
+            return format_error(column, "variable number must be a whole number");
+        }
+        out = add(ExprNode{ExprOp::variable, ExprFunction::sin, -1, -1, n, column});
+        return std::nullopt;
+    }
+
+    std::optional<Diagnostic> bracketed(std::int32_t& out) {
+        std::uint32_t column = c_.column();
+        ++c_.pos;  // '['
+        if (++depth_ > max_bracket_depth) {
+            Diagnostic d = error_at(block_.at_column(column), "bracket-nesting",
+                                    fmt::format("brackets nested deeper than {}", max_bracket_depth));
+            d.alarm = alarm::bracket_nesting;
+            return d;
+        }
+        if (auto e = comparison(out)) return e;
+        if (c_.peek() != ']') return format_error(c_.column(), "']' expected");
+        ++c_.pos;
+        --depth_;
+        return std::nullopt;
+    }
+
+    std::optional<Diagnostic> function(const FunctionName& f, std::uint32_t column, std::int32_t& out) {
+        if (c_.peek() != '[') return format_error(c_.column(), fmt::format("'[' expected after {}", f.name));
+        std::uint32_t open = c_.column();
+        ++c_.pos;
+        if (++depth_ > max_bracket_depth) {
+            Diagnostic d = error_at(block_.at_column(open), "bracket-nesting",
+                                    fmt::format("brackets nested deeper than {}", max_bracket_depth));
+            d.alarm = alarm::bracket_nesting;
+            return d;
+        }
+        std::int32_t first = -1;
+        std::int32_t second = -1;
+        if (auto e = comparison(first)) return e;
+        bool two_arguments = f.arguments == 2 || f.function == ExprFunction::atan;
+        if (two_arguments && c_.peek() == ',') {
+            ++c_.pos;
+            if (auto e = comparison(second)) return e;
+        }
+        if (c_.peek() != ']') return format_error(c_.column(), "']' expected");
+        ++c_.pos;
+        --depth_;
+        if (f.function == ExprFunction::atan && second < 0) {
+            // The 0i form ATAN[a]/[b]: a '/' directly followed by '[' is the second argument.
+            Cursor look = c_;
+            if (look.peek() == '/') {
+                ++look.pos;
+                if (look.peek() == '[') {
+                    c_ = look;
+                    if (auto e = bracketed(second)) return e;
+                }
+            }
+        }
+        if (f.arguments == 2 && second < 0) {
+            return format_error(column, fmt::format("{} takes two arguments: {}[a,b]", f.name, f.name));
+        }
+        out = add(ExprNode{ExprOp::function, f.function, first, second, 0, column});
+        return std::nullopt;
+    }
+
+    std::optional<Diagnostic> number(std::int32_t& out) {
+        std::uint32_t column = c_.column();
+        char digits[64];
+        std::size_t n = 0;
+        bool point = false;
+        for (; c_.pos < c_.line.size(); ++c_.pos) {
+            char ch = c_.line[c_.pos];
+            if (is_blank(ch)) continue;
+            if (ch == '.') {
+                if (point) return format_error(c_.column(), "number has two decimal points");
+                point = true;
+            } else if (!is_digit(ch)) {
+                break;
+            }
+            if (n + 1 >= sizeof digits) return format_error(column, "number has too many digits");
+            digits[n++] = ch;
+        }
+        if (n == 0) return format_error(column, "number expected");
+        std::optional<double> value = parse_decimal(digits, n);
+        if (!value) return format_error(column, "bad number");
+        out = add(ExprNode{ExprOp::number, ExprFunction::sin, -1, -1, *value, column});
+        return std::nullopt;
+    }
+
+    std::optional<Diagnostic> format_error(std::uint32_t column, std::string message) const {
+        Diagnostic d = error_at(block_.at_column(column), "macro-format", std::move(message));
+        d.alarm = alarm::format;
+        return d;
+    }
+
+private:
+    std::int32_t add(const ExprNode& node) {
+        block_.exprs.push_back(node);
+        return static_cast<std::int32_t>(block_.exprs.size() - 1);
+    }
+
+    Cursor& c_;
+    Block& block_;
+    int depth_ = 0;
+};
+
+std::optional<Diagnostic> loop_number(Cursor& cursor, Block& block, int& loop) {
+    cursor.skip_blanks();
+    std::uint32_t column = cursor.column();
+    int value = 0;
+    int digits = 0;
+    while (!cursor.at_end() && is_digit(cursor.line[cursor.pos])) {
+        value = value * 10 + (cursor.line[cursor.pos] - '0');
+        ++cursor.pos;
+        if (++digits > 3) break;
+    }
+    if (digits == 0 || value < 1 || value > 3) {
+        Diagnostic d = error_at(block.at_column(column), "loop-number", "loop number must be 1, 2 or 3 (DO1..DO3)");
+        d.alarm = alarm::loop_number;
+        return d;
+    }
+    loop = value;
+    return std::nullopt;
+}
+
+}  // namespace
+
+void Cursor::skip_blanks() {
+    while (pos < line.size() && is_blank(line[pos])) ++pos;
+}
+
+bool Cursor::at_end() {
+    skip_blanks();
+    return pos >= line.size();
+}
+
+char Cursor::peek() {
+    skip_blanks();
+    return pos < line.size() ? upper(line[pos]) : '\0';
+}
+
+bool Cursor::accept_keyword(std::string_view keyword) {
+    skip_blanks();
+    std::size_t p = pos;
+    for (char k : keyword) {
+        while (p < line.size() && is_blank(line[p])) ++p;
+        if (p >= line.size() || upper(line[p]) != k) return false;
+        ++p;
+    }
+    pos = p;
+    return true;
+}
+
+bool at_statement(Cursor cursor) {
+    if (cursor.peek() == '#') return true;
+    for (std::string_view keyword : {"IF", "GOTO", "WHILE", "DO", "END"}) {
+        Cursor look = cursor;
+        if (look.accept_keyword(keyword)) return true;
+    }
+    return false;
+}
+
+std::optional<Diagnostic> parse_word_expression(Cursor& cursor, Block& block, Word& word) {
+    ExpressionParser parser(cursor, block);
+    std::int32_t root = -1;
+    if (auto e = parser.unary(root)) return e;
+    word.expr = root;
+    word.has_decimal_point = true;  // a computed value is never read in least increments
+    return std::nullopt;
+}
+
+std::optional<Diagnostic> parse_statement(Cursor& cursor, Block& block) {
+    MacroStatement& s = block.statement;
+    s.column = (cursor.skip_blanks(), cursor.column());
+    ExpressionParser parser(cursor, block);
+    auto assignment = [&]() -> std::optional<Diagnostic> {
+        if (cursor.peek() != '#') return parser.format_error(cursor.column(), "'#' expected: an assignment");
+        if (auto e = parser.variable(s.target)) return e;
+        if (cursor.peek() != '=') return parser.format_error(cursor.column(), "'=' expected after the variable");
+        ++cursor.pos;
+        return parser.comparison(s.value);
+    };
+    if (cursor.peek() == '#') {
+        s.kind = StatementKind::assign;
+        return assignment();
+    }
+    if (cursor.accept_keyword("IF")) {
+        if (cursor.peek() != '[') return parser.format_error(cursor.column(), "'[' expected after IF");
+        if (auto e = parser.comparison(s.condition)) return e;
+        if (cursor.accept_keyword("GOTO")) {
+            s.kind = StatementKind::if_goto;
+            return parser.unary(s.value);
+        }
+        if (cursor.accept_keyword("THEN")) {
+            s.kind = StatementKind::if_then;
+            return assignment();
+        }
+        return parser.format_error(cursor.column(), "GOTO or THEN expected after IF [condition]");
+    }
+    if (cursor.accept_keyword("GOTO")) {
+        s.kind = StatementKind::go_to;
+        return parser.unary(s.value);
+    }
+    if (cursor.accept_keyword("WHILE")) {
+        s.kind = StatementKind::while_do;
+        if (cursor.peek() != '[') return parser.format_error(cursor.column(), "'[' expected after WHILE");
+        if (auto e = parser.comparison(s.condition)) return e;
+        if (!cursor.accept_keyword("DO")) return parser.format_error(cursor.column(), "DO expected after WHILE [condition]");
+        return loop_number(cursor, block, s.loop);
+    }
+    if (cursor.accept_keyword("DO")) {
+        s.kind = StatementKind::do_loop;
+        return loop_number(cursor, block, s.loop);
+    }
+    if (cursor.accept_keyword("END")) {
+        s.kind = StatementKind::end_loop;
+        return loop_number(cursor, block, s.loop);
+    }
+    return parser.format_error(cursor.column(), "unknown macro statement");
+}
+
+}  // namespace nckit::gcode

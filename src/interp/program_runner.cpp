@@ -1,0 +1,197 @@
+#include "program_runner.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "macro/retained_store.hpp"
+#include "nckit/gcode/macro_alarms.hpp"
+#include "nckit/gcode/parser.hpp"
+
+namespace nckit::interp {
+
+namespace {
+
+constexpr std::size_t max_call_depth = 10;  // subprogram levels, macros included
+constexpr double seconds_per_hour = 3600.0;
+constexpr double timer_wrap_ms = 4294967296.0;  // #3001 wraps like a 32-bit millisecond counter
+
+bool starts_with_block_delete(std::string_view line) {
+    std::size_t i = line.find_first_not_of(" \t");
+    return i != std::string_view::npos && line[i] == '/';
+}
+
+bool is_axis_or_offset_letter(char letter) {
+    return axis_from_letter(letter).has_value() || letter == 'I' || letter == 'J' || letter == 'K' || letter == 'R';
+}
+
+}  // namespace
+
+ProgramRunner::ProgramRunner(const MachineConfig& machine, ProgramSource main, const InterpreterOptions& options)
+    : machine_(machine),
+      options_(options),
+      executor_(machine, options_),
+      library_(options.library_dir) {
+    eval_settings_.least_increment_input = machine.decimal_point_input == DecimalPointInput::least_increment;
+    variables_.set_system(this);
+    sources_.reserve(max_call_depth + 1);
+    ProgramLocation location{*main.file(), true, 0, 1};
+    sources_.push_back(std::move(main));
+    Frame main_frame;
+    main_frame.program = location;
+    frames_.push_back(std::move(main_frame));
+    if (!options_.retained_file.empty()) {
+        auto retained = load_retained(options_.retained_file);
+        if (retained) {
+            variables_.set_retained(*retained);
+        } else {
+            startup_error_ = retained.diagnostics().front();
+        }
+    }
+}
+
+Diagnostic ProgramRunner::alarm_at(const Block& block, std::uint32_t column, int alarm, std::string message) const {
+    Diagnostic d = error_at(block.at_column(column == 0 ? 1 : column), "macro-alarm", std::move(message));
+    d.alarm = alarm;
+    return d;
+}
+
+std::optional<Diagnostic> ProgramRunner::save_retained() const {
+    if (options_.retained_file.empty() || !variables_.retained_changed()) return std::nullopt;
+    return interp::save_retained(options_.retained_file, variables_.retained());
+}
+
+std::optional<InterpResult> ProgramRunner::fill(std::vector<Move>& pending) {
+    if (startup_error_) return InterpResult(*startup_error_);
+    while (pending.empty()) {
+        auto line = source().next();
+        if (!line) return InterpResult(line.diagnostics().front());
+        const bool in_call = frames_.size() > 1;
+        if (!line.value()) {
+            if (!in_call) return InterpResult(ProgramEnd{});
+            block_.location = make_location(source().file(), source().next_line_number(), 1);
+            return InterpResult(alarm_at(block_, 1, alarm::format,
+                                         fmt::format("program O{} ends without M99", frame().program_number)));
+        }
+        const ProgramSource::Line& text = **line;
+        if (options_.block_delete && starts_with_block_delete(text.text)) {
+            seen_block_ = true;
+            continue;  // skipped unread: a deleted block is not part of the program
+        }
+        block_.location = make_location(source().file(), text.number, 1);
+        line_offset_ = text.offset;
+        if (auto error = parse_block(text.text, block_)) return InterpResult(std::move(*error));
+        if (block_.tape_mark) {
+            if (in_call) return InterpResult(alarm_at(block_, 1, alarm::format, "'%' inside a called program: M99 missing"));
+            // A leading '%' opens the tape; any later one closes it and ends the program.
+            if (seen_tape_mark_ || seen_block_) return InterpResult(ProgramEnd{});
+            seen_tape_mark_ = true;
+            // The program proper starts after the tape mark: M99 in the main program restarts here.
+            frames_[0].program.offset = source().next_offset();
+            frames_[0].program.line = source().next_line_number();
+            continue;
+        }
+        if (block_.words.empty() && block_.statement.kind == StatementKind::none) continue;
+        seen_block_ = true;
+        if (auto result = run_block(block_, pending)) return result;
+    }
+    return std::nullopt;
+}
+
+std::optional<InterpResult> ProgramRunner::run_block(const Block& block, std::vector<Move>& pending) {
+    Frame& current = frame();
+    if (!block.words.empty() && block.words.front().letter == 'O') {
+        // A program's own O line is its header; reaching the next program's ends this one.
+        if (!current.started) {
+            current.started = true;
+            current.program_number = static_cast<std::int64_t>(block.words.front().value);
+            return std::nullopt;
+        }
+        if (frames_.size() == 1) return InterpResult(ProgramEnd{});
+        return InterpResult(alarm_at(block, 1, alarm::format,
+                                     fmt::format("program O{} runs into the next program without M99",
+                                                 current.program_number)));
+    }
+    current.started = true;
+    if (frames_.size() > 1 || !current.loops.empty() || current.jumped_back) {
+        if (++counted_blocks_ > options_.max_blocks) {
+            return InterpResult(alarm_at(block, 1, alarm::too_many_blocks,
+                                         fmt::format("more than {} blocks run in loops and calls: a runaway "
+                                                     "program? (raise the budget with --max-blocks)",
+                                                     options_.max_blocks)));
+        }
+    }
+    if (!block.words.empty() && block.words.front().letter == 'N') {
+        last_sequence_ = static_cast<std::int64_t>(block.words.front().value);
+    }
+    if (block.statement.kind != StatementKind::none) {
+        if (auto error = run_statement(block)) return InterpResult(std::move(*error));
+        return std::nullopt;
+    }
+    return run_nc_block(block, pending);
+}
+
+std::optional<Diagnostic> ProgramRunner::resolve_words(const Block& block, Block& resolved) {
+    resolved.clear();
+    resolved.location = block.location;
+    resolved.comment = block.comment;
+    const bool inch = executor_.inch_units();
+    for (const Word& word : block.words) {
+        if (word.expr < 0) {
+            resolved.words.push_back(word);
+            continue;
+        }
+        MacroValue value;
+        if (auto error = evaluate(block, word.expr, variables_, eval_settings_, value)) return error;
+        if (value.vacant) continue;  // a word whose variable is vacant is left out
+        Word out = word;
+        out.expr = -1;
+        double v = value.number;
+        if (word.letter == 'G' || word.letter == 'M') {
+            v = std::trunc(v);  // G#10 and M#10 take the integer part
+        } else if (is_axis_or_offset_letter(word.letter)) {
+            // Rounded to the address's least input increment, as the control does.
+            auto axis = axis_from_letter(word.letter);
+            const AxisConfig* config = axis ? machine_.find(*axis) : nullptr;
+            bool rotary = config != nullptr && config->kind == AxisKind::rotary;
+            double increment = (inch && !rotary) ? 1e-4 : 1e-3;
+            v = round_half_away(v / increment) * increment;
+        }
+        out.value = v;
+        resolved.words.push_back(out);
+    }
+    return std::nullopt;
+}
+
+std::optional<MacroValue> ProgramRunner::read_system(std::int64_t number) const {
+    switch (number) {
+        case 3000: return MacroValue{};
+        case 3001: {
+            double ms = (executor_.elapsed_s() - timer_ms_base_s_) * 1000.0;
+            return MacroValue::of(std::fmod(std::floor(ms), timer_wrap_ms));
+        }
+        case 3002: return MacroValue::of((executor_.elapsed_s() - timer_hours_base_s_) / seconds_per_hour);
+        case 4012: return MacroValue::of(modal_call_.program >= 0 ? 66 : 67);
+        case 4114: return MacroValue::of(static_cast<double>(last_sequence_));
+        case 4115: return MacroValue::of(static_cast<double>(frames_.back().program_number));
+        default: return executor_.read_system(number);
+    }
+}
+
+std::optional<SystemVariables::WriteError> ProgramRunner::write_system(std::int64_t number, double value) {
+    switch (number) {
+        case 3000: {
+            // #3000 = n (MESSAGE) stops the program with alarm 3000 + n and the message.
+            auto n = static_cast<int>(round_half_away(value));
+            std::string message = block_.comment.empty() ? "user alarm" : block_.comment;
+            return WriteError{alarm::user_base + n, message};
+        }
+        case 3001: timer_ms_base_s_ = executor_.elapsed_s() - value / 1000.0; return std::nullopt;
+        case 3002: timer_hours_base_s_ = executor_.elapsed_s() - value * seconds_per_hour; return std::nullopt;
+        case 3003:
+        case 3004: return std::nullopt;  // single-block / feed-hold suppression: nothing to suppress here
+        default: return executor_.write_system(number, value);
+    }
+}
+
+}  // namespace nckit::interp

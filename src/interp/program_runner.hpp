@@ -1,0 +1,102 @@
+#pragma once
+// Runs a program's blocks in the order Custom Macro B gives them: statements (assignments, IF,
+// GOTO, WHILE/DO/END), calls (G65, G66/G67, M98, M99) and the NC blocks, which it hands to the
+// Executor after evaluating their expressions.
+#include <optional>
+#include <vector>
+
+#include "executor.hpp"
+#include "macro/evaluate.hpp"
+#include "macro/program_library.hpp"
+#include "macro/variables.hpp"
+#include "nckit/interp/interpreter.hpp"
+
+namespace nckit::interp {
+
+//! An active WHILE/DO range.
+struct LoopEntry {
+    int number = 0;              //!< m of DOm
+    std::uint64_t offset = 0;    //!< the DO block's line, where ENDm goes back to
+    std::uint32_t line = 0;
+};
+
+//! One level of the call stack: the main program, a subprogram (M98) or a macro (G65/G66).
+struct Frame {
+    ProgramLocation program;
+    std::int64_t program_number = 0;  //!< #4115; 0 when the program has no O number
+    std::uint64_t return_offset = 0;  //!< the caller's next line
+    std::uint32_t return_line = 0;
+    int repeats_left = 1;             //!< L count still to run, this run included
+    bool own_locals = false;          //!< G65/G66: a fresh set of #1-#33
+    bool modal_call = false;          //!< started by G66 after a move
+    bool started = false;             //!< a block of it has been read (its O line is its header)
+    bool jumped_back = false;         //!< blocks now count against the runaway budget
+    std::vector<LoopEntry> loops;
+};
+
+class ProgramRunner final : public SystemVariables {
+public:
+    ProgramRunner(const MachineConfig& machine, ProgramSource main, const InterpreterOptions& options);
+
+    //! Runs blocks until moves are queued in `pending`, the program ends, or an error stops it.
+    [[nodiscard]] std::optional<InterpResult> fill(std::vector<Move>& pending);
+
+    //! Writes #500-#999 back when the program changed them and a file is configured.
+    [[nodiscard]] std::optional<Diagnostic> save_retained() const;
+
+    [[nodiscard]] std::optional<MacroValue> read_system(std::int64_t number) const override;
+    [[nodiscard]] std::optional<SystemVariables::WriteError> write_system(std::int64_t number, double value) override;
+
+private:
+    // program_runner.cpp: reading and running blocks.
+    std::optional<InterpResult> run_block(const Block& block, std::vector<Move>& pending);
+    std::optional<Diagnostic> resolve_words(const Block& block, Block& resolved);
+    [[nodiscard]] ProgramSource& source() { return sources_[frames_.size() - 1]; }
+    [[nodiscard]] Frame& frame() { return frames_.back(); }
+    [[nodiscard]] Diagnostic alarm_at(const Block& block, std::uint32_t column, int alarm, std::string message) const;
+
+    // runner_flow.cpp: statements, jumps and loops.
+    std::optional<Diagnostic> run_statement(const Block& block);
+    std::optional<Diagnostic> assign(const Block& block);
+    std::optional<Diagnostic> jump_to_sequence(const Block& block, std::uint32_t column, std::int64_t number);
+    std::optional<Diagnostic> start_loop(const Block& block, bool condition_holds);
+    std::optional<Diagnostic> end_loop(const Block& block);
+    std::optional<Diagnostic> skip_past_end(const Block& block, int loop);
+    [[nodiscard]] std::optional<Diagnostic> condition(const Block& block, bool& holds);
+
+    // runner_calls.cpp: G65, G66/G67, M98, M99.
+    std::optional<InterpResult> run_nc_block(const Block& block, std::vector<Move>& pending);
+    std::optional<Diagnostic> call(const Block& block, std::uint32_t column, std::int64_t program, int repeats,
+                                   bool own_locals, const Variables::Locals* arguments, bool modal);
+    std::optional<Diagnostic> return_from_call(const Block& block, std::int64_t sequence);
+    std::optional<Diagnostic> arguments_of(const Block& block, Variables::Locals& arguments) const;
+
+    const MachineConfig& machine_;
+    InterpreterOptions options_;
+    EvalSettings eval_settings_;
+    Executor executor_;
+    Variables variables_;
+    ProgramLibrary library_;
+    std::vector<ProgramSource> sources_;  // one reader per call depth; [0] reads the main program
+    std::vector<Frame> frames_;
+    std::optional<Diagnostic> startup_error_;
+
+    struct ModalCall {
+        std::int64_t program = -1;  //!< -1: no G66 active
+        int repeats = 1;
+        Variables::Locals arguments{};
+    } modal_call_;
+
+    Block block_;            // the block being read
+    Block resolved_;         // its words with expressions evaluated
+    Block scan_;             // scratch for searches (GOTO, skipping a loop)
+    std::uint64_t line_offset_ = 0;   // where the block being run starts in its file
+    std::int64_t counted_blocks_ = 0;
+    std::int64_t last_sequence_ = 0;  // #4114
+    double timer_ms_base_s_ = 0;      // #3001 = (elapsed - base) in ms
+    double timer_hours_base_s_ = 0;   // #3002
+    bool seen_tape_mark_ = false;
+    bool seen_block_ = false;
+};
+
+}  // namespace nckit::interp
