@@ -9,8 +9,7 @@ namespace nckit::cli {
 namespace {
 struct CheckOptions {
     std::string program;
-    std::string machine;
-    InterpreterOptions interpreter;
+    MachineOptions machine;
 };
 }  // namespace
 
@@ -18,10 +17,9 @@ void add_check_verb(CLI::App& app, int& exit_status) {
     auto options = std::make_shared<CheckOptions>();
     CLI::App* verb = app.add_subcommand("check", "Check a program: print its errors, exit 0 when clean");
     verb->add_option("FILE", options->program, "NC program")->required();
-    verb->add_option("--machine", options->machine, "machine config (TOML); default: built-in 3-axis mill");
-    verb->add_flag("--block-delete", options->interpreter.block_delete, "skip blocks that start with \'/\'");
+    add_machine_options(*verb, options->machine);
     verb->callback([options, &exit_status] {
-        auto interpreter = open_program_or_report(options->program, options->machine, options->interpreter);
+        auto interpreter = open_program_or_report(options->program, options->machine, false);
         if (!interpreter) {
             exit_status = exit_bad_input;
             return;

@@ -15,8 +15,7 @@ namespace {
 
 struct MovesOptions {
     std::string program;
-    std::string machine;
-    InterpreterOptions interpreter;
+    MachineOptions machine;
     bool json = false;
     bool summary = false;
 };
@@ -34,7 +33,7 @@ void print_summary(const MoveSummary& s, const MachineConfig& machine) {
 }
 
 int run_moves(const MovesOptions& options) {
-    auto interpreter = open_program_or_report(options.program, options.machine, options.interpreter);
+    auto interpreter = open_program_or_report(options.program, options.machine);
     if (!interpreter) return exit_bad_input;
     const MachineConfig& machine = interpreter->machine();
     std::string buffer;
@@ -76,8 +75,7 @@ void add_moves_verb(CLI::App& app, int& exit_status) {
     auto options = std::make_shared<MovesOptions>();
     CLI::App* verb = app.add_subcommand("moves", "Print the moves a program makes, in machine coordinates");
     verb->add_option("FILE", options->program, "NC program")->required();
-    verb->add_option("--machine", options->machine, "machine config (TOML); default: built-in 3-axis mill");
-    verb->add_flag("--block-delete", options->interpreter.block_delete, "skip blocks that start with \'/\'");
+    add_machine_options(*verb, options->machine);
     verb->add_flag("--json", options->json, "one JSON object per line");
     verb->add_flag("--summary", options->summary, "totals instead of the moves");
     verb->callback([options, &exit_status] { exit_status = run_moves(*options); });

@@ -11,6 +11,7 @@ int main(int argc, char** argv) {
     int exit_status = 0;
     nckit::cli::add_moves_verb(app, exit_status);
     nckit::cli::add_check_verb(app, exit_status);
+    nckit::cli::add_expand_verb(app, exit_status);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

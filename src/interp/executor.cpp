@@ -138,6 +138,10 @@ std::optional<Diagnostic> Executor::set_feed_and_spindle(std::vector<Move>& out)
     }
     SpindleState& spindle = modal_.spindle;
     if (GCode c = words_.group(ModalGroup::spindle_mode); c >= 0) spindle.constant_surface_speed = c == g(96);
+    if (const Word* d = words_.word('D')) {
+        if (d->value <= 0) return error(d->column, "bad-value", "G96 D (maximum rpm) must be positive");
+        spindle.rpm_clamp = d->value;
+    }
     bool clamp_block = words_.group(ModalGroup::non_modal) == g(50);
     if (const Word* s = words_.word('S')) {
         if (s->value < 0) return error(s->column, "bad-value", "spindle speed S must not be negative");

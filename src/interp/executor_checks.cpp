@@ -111,6 +111,10 @@ std::optional<Diagnostic> Executor::check_words() {
             case 'E':
                 if (is_thread(motion_) && moves) continue;
                 return unused("E word with no G32/G33 to use it");
+            case 'D':
+                // LinuxCNC's spindle clamp for constant surface speed: G96 D<rpm> S<speed>.
+                if (words_.group(ModalGroup::spindle_mode) == g(96)) continue;
+                return error(word.column, "unsupported-word", "D word is not supported (except as G96 D<max rpm>)");
             case 'P':
                 if (dwell || non_modal == g(10) || words_.group(ModalGroup::path_control) == g(64)) continue;
                 return unused("P word with no G4, G10 or G64 to use it");

@@ -57,7 +57,9 @@ Diagnostic ProgramRunner::alarm_at(const Block& block, std::uint32_t column, int
 }
 
 std::optional<Diagnostic> ProgramRunner::save_retained() const {
-    if (options_.retained_file.empty() || !variables_.retained_changed()) return std::nullopt;
+    if (options_.retained_file.empty() || !options_.save_retained || !variables_.retained_changed()) {
+        return std::nullopt;
+    }
     return interp::save_retained(options_.retained_file, variables_.retained());
 }
 

@@ -26,6 +26,8 @@ struct InterpreterOptions {
     std::int64_t max_blocks = 10'000'000;
     //! File that keeps #500-#999 between runs; empty: they start vacant and are not kept.
     std::filesystem::path retained_file;
+    //! Write changed #500-#999 back at the end of the run (a check reads them but keeps none).
+    bool save_retained = true;
 };
 
 //! The program ended: M2, M30, a closing '%', or the end of the file.

@@ -1,0 +1,36 @@
+#pragma once
+// Writes a move stream back as a plain RS-274 program: one move per block, absolute machine
+// coordinates in mm, no variables, loops or calls. What `nckit expand` prints; LinuxCNC's rs274
+// and nckit itself read it back to the same motions.
+#include <string>
+
+#include "nckit/core/machine.hpp"
+#include "nckit/interp/move.hpp"
+
+namespace nckit {
+
+class GcodeWriter {
+public:
+    explicit GcodeWriter(const MachineConfig& machine) : machine_(machine) {}
+
+    //! The opening blocks: units, distance mode, plane, offsets cleared, radius mode.
+    void append_header(std::string& out, const std::string& source_name) const;
+
+    //! One block for the move, ending in a comment that names its source file and line.
+    void append(std::string& out, const Move& move);
+
+    //! M30 unless the stream already ended with M2 or M30.
+    void append_footer(std::string& out) const;
+
+private:
+    void append_axes(std::string& out, const AxisVector& position) const;
+    void append_feed(std::string& out, const Feed& feed);
+
+    const MachineConfig& machine_;
+    Plane plane_ = Plane::xy;
+    FeedMode feed_mode_ = FeedMode::per_minute;
+    double feed_ = -1;         // the F last written, in its mode's unit
+    bool ended_ = false;
+};
+
+}  // namespace nckit

@@ -1,0 +1,84 @@
+// nckit expand FILE: the program with every macro resolved, as a plain program of one move per
+// block. With -o the file appears only when the whole program ran clean.
+#include <cstdio>
+#include <filesystem>
+#include <variant>
+
+#include <fmt/format.h>
+
+#include "common.hpp"
+#include "nckit/interp/move_gcode.hpp"
+#include "verbs.hpp"
+
+namespace nckit::cli {
+
+namespace {
+
+struct ExpandOptions {
+    std::string program;
+    std::string output;
+    MachineOptions machine;
+};
+
+int run_expand(const ExpandOptions& options) {
+    auto interpreter = open_program_or_report(options.program, options.machine);
+    if (!interpreter) return exit_bad_input;
+    std::filesystem::path temporary;
+    std::FILE* out = stdout;
+    if (!options.output.empty()) {
+        temporary = options.output + ".partial";
+        out = std::fopen(temporary.c_str(), "wb");
+        if (out == nullptr) {
+            fmt::print(stderr, "{}:0:0: error: cannot write\n", options.output);
+            return exit_bad_input;
+        }
+    }
+    auto abandon = [&] {
+        if (out != stdout) {
+            std::fclose(out);
+            std::filesystem::remove(temporary);
+        }
+        return exit_bad_input;
+    };
+    GcodeWriter writer(interpreter->machine());
+    std::string buffer;
+    writer.append_header(buffer, options.program);
+    for (;;) {
+        InterpResult result = interpreter->next();
+        if (std::holds_alternative<ProgramEnd>(result)) break;
+        if (const auto* diagnostic = std::get_if<Diagnostic>(&result)) {
+            if (out == stdout) std::fwrite(buffer.data(), 1, buffer.size(), out);
+            print_diagnostic(*diagnostic);
+            return abandon();
+        }
+        writer.append(buffer, std::get<Move>(result));
+        if (buffer.size() > (1 << 16)) {
+            std::fwrite(buffer.data(), 1, buffer.size(), out);
+            buffer.clear();
+        }
+    }
+    writer.append_footer(buffer);
+    std::fwrite(buffer.data(), 1, buffer.size(), out);
+    if (out != stdout) {
+        if (std::fclose(out) != 0) {
+            std::filesystem::remove(temporary);
+            fmt::print(stderr, "{}:0:0: error: cannot write\n", options.output);
+            return exit_bad_input;
+        }
+        std::filesystem::rename(temporary, options.output);
+    }
+    return 0;
+}
+
+}  // namespace
+
+void add_expand_verb(CLI::App& app, int& exit_status) {
+    auto options = std::make_shared<ExpandOptions>();
+    CLI::App* verb = app.add_subcommand("expand", "Resolve macros and calls into a plain program, one move per block");
+    verb->add_option("FILE", options->program, "NC program")->required();
+    verb->add_option("-o,--output", options->output, "write the program here (default: standard output)");
+    add_machine_options(*verb, options->machine);
+    verb->callback([options, &exit_status] { exit_status = run_expand(*options); });
+}
+
+}  // namespace nckit::cli

@@ -1,0 +1,133 @@
+#include "nckit/interp/move_gcode.hpp"
+
+#include <filesystem>
+#include <iterator>
+#include <variant>
+
+#include <fmt/format.h>
+
+#include "nckit/core/format_fixed.hpp"
+#include "nckit/interp/arc_geometry.hpp"
+
+namespace nckit {
+
+namespace {
+
+void word(std::string& out, std::string_view letter, double value) {
+    out += ' ';
+    out += letter;
+    append_fixed4(out, std::abs(value) < 5e-5 ? 0.0 : value);
+}
+
+const char* plane_code(Plane plane) {
+    switch (plane) {
+        case Plane::xy: return "G17";
+        case Plane::zx: return "G18";
+        case Plane::yz: return "G19";
+    }
+    return "G17";
+}
+
+//! The centre-offset letter of a plane axis: I for X, J for Y, K for Z.
+char offset_letter(Axis axis) { return axis == Axis::X ? 'I' : axis == Axis::Y ? 'J' : 'K'; }
+
+void source_comment(std::string& out, const SourceLocation& where) {
+    std::string name = std::filesystem::path(where.file_name()).filename().string();
+    fmt::format_to(std::back_inserter(out), " ({}:{})", name, where.line);
+}
+
+}  // namespace
+
+void GcodeWriter::append_header(std::string& out, const std::string& source_name) const {
+    fmt::format_to(std::back_inserter(out), "( {} expanded by nckit for machine {} )\n",
+                   std::filesystem::path(source_name).filename().string(), machine_.name);
+    out += "( one move per block, absolute machine coordinates in mm; dwell P in ms )\n";
+    // Offsets cleared so that program coordinates are machine coordinates; radius mode because
+    // the moves carry radii whatever the program wrote.
+    out += "G21 G90 G94 G17 G40 G49 G80 G54\n";
+    out += "G10 L2 P1";
+    for (const AxisConfig& axis : machine_.axes) fmt::format_to(std::back_inserter(out), " {}0", letter(axis.axis));
+    out += '\n';
+    if (machine_.diameter_mode) out += "G8\n";
+}
+
+void GcodeWriter::append_axes(std::string& out, const AxisVector& position) const {
+    for (std::size_t i = 0; i < axis_count; ++i) {
+        auto axis = static_cast<Axis>(i);
+        if (machine_.find(axis) == nullptr) continue;
+        const char name[1] = {letter(axis)};
+        word(out, std::string_view(name, 1), position[axis]);
+    }
+}
+
+void GcodeWriter::append_feed(std::string& out, const Feed& feed) {
+    double value = feed.mode == FeedMode::per_revolution ? feed.mm_per_rev : feed.mm_per_min;
+    if (feed.mode != feed_mode_) {
+        out += feed.mode == FeedMode::per_revolution ? " G95" : " G94";
+        feed_mode_ = feed.mode;
+        feed_ = -1;
+    }
+    if (value != feed_) {
+        word(out, "F", value);
+        feed_ = value;
+    }
+}
+
+void GcodeWriter::append(std::string& out, const Move& move) {
+    std::visit(
+        [&](const auto& m) {
+            using T = std::decay_t<decltype(m)>;
+            if constexpr (std::is_same_v<T, Line>) {
+                out += m.rapid ? "G0" : "G1";
+                append_axes(out, m.to);
+                if (!m.rapid) append_feed(out, m.feed);
+            } else if constexpr (std::is_same_v<T, Arc>) {
+                if (m.plane != plane_) {
+                    out += plane_code(m.plane);
+                    out += ' ';
+                    plane_ = m.plane;
+                }
+                out += m.direction == ArcDirection::clockwise ? "G2" : "G3";
+                append_axes(out, m.to);
+                PlaneAxes p = plane_axes(m.plane);
+                for (Axis axis : {p.first, p.second}) {
+                    const char name[1] = {offset_letter(axis)};
+                    word(out, std::string_view(name, 1), m.center[axis] - m.from[axis]);
+                }
+                append_feed(out, m.feed);
+            } else if constexpr (std::is_same_v<T, SyncMove>) {
+                out += "G33";
+                append_axes(out, m.to);
+                word(out, "K", m.feed.mm_per_rev);  // the lead, mm/rev (LinuxCNC and nckit read K)
+            } else if constexpr (std::is_same_v<T, Dwell>) {
+                fmt::format_to(std::back_inserter(out), "G4 P{}", m.seconds * 1000.0);
+            } else if constexpr (std::is_same_v<T, Io>) {
+                switch (m.kind) {
+                    case IoKind::mcode:
+                        fmt::format_to(std::back_inserter(out), "M{}", m.number);
+                        ended_ = m.number == 2 || m.number == 30;
+                        break;
+                    case IoKind::tool_select: fmt::format_to(std::back_inserter(out), "T{}", m.number); break;
+                    case IoKind::spindle_speed:
+                        if (m.constant_surface_speed) {
+                            // LinuxCNC's form of the clamp (G96 D) rather than Fanuc's G50 S.
+                            out += "G96";
+                            if (m.rpm_clamp > 0) fmt::format_to(std::back_inserter(out), " D{}", m.rpm_clamp);
+                            fmt::format_to(std::back_inserter(out), " S{}", m.value);
+                        } else {
+                            fmt::format_to(std::back_inserter(out), "G97 S{}", m.value);
+                        }
+                        break;
+                }
+            }
+        },
+        move.what);
+    source_comment(out, move.where);
+    out += '\n';
+}
+
+void GcodeWriter::append_footer(std::string& out) const {
+    if (!ended_) out += "M30\n";
+}
+
+}  // namespace nckit
