@@ -110,7 +110,7 @@ TEST(BlockErrors, SequenceNumberMustStartTheBlock) {
 TEST(BlockErrors, UnsupportedLetter) {
     Diagnostic d = error_of("G0 X1 D1\n");
     EXPECT_EQ(where(d), "unsupported-word 1:7");
-    EXPECT_EQ(d.message, "D word is not supported");
+    EXPECT_EQ(d.message, "D word is not supported (except as G96 D<max rpm>)");
     EXPECT_EQ(error_where("H2\n"), "unsupported-word 1:1");
 }
 
