@@ -301,7 +301,8 @@ bool Cursor::accept_keyword(std::string_view keyword) {
 
 bool at_statement(Cursor cursor) {
     if (cursor.peek() == '#') return true;
-    for (std::string_view keyword : {"IF", "GOTO", "WHILE", "DO", "END"}) {
+    static constexpr std::array<std::string_view, 5> keywords{"IF", "GOTO", "WHILE", "DO", "END"};
+    for (std::string_view keyword : keywords) {
         Cursor look = cursor;
         if (look.accept_keyword(keyword)) return true;
     }

@@ -41,7 +41,7 @@ public:
                 if (auto error = skip_comment()) return error;
                 continue;
             }
-            if (c == '#' || (is_letter(c) && gcode::at_statement(gcode::Cursor{line_, pos_}))) {
+            if (c == '#' || (is_letter(c) && letter_follows() && gcode::at_statement(gcode::Cursor{line_, pos_}))) {
                 if (auto error = parse_statement()) return error;
                 continue;
             }
@@ -133,6 +133,10 @@ private:
             block_.words.push_back(word);
             return std::nullopt;
         }
+        if (parse_plain_number(word)) {
+            block_.words.push_back(word);
+            return std::nullopt;
+        }
         // Gather sign, digits and point, dropping blanks, into a small buffer.
         char digits[64];
         std::size_t n = 0;
@@ -170,6 +174,52 @@ private:
         word.value = negative ? -*value : *value;
         block_.words.push_back(word);
         return std::nullopt;
+    }
+
+    //! The common case, `-12.345` with no blank inside: read straight from the line. False (and
+    //! nothing consumed) when the number needs the general path: blanks inside, many digits,
+    //! no digits, or a second point.
+    bool parse_plain_number(Word& word) {
+        static constexpr double powers_of_ten[] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12,
+                                                   1e13, 1e14, 1e15};
+        std::size_t p = pos_;
+        bool negative = false;
+        if (p < line_.size() && (line_[p] == '-' || line_[p] == '+')) negative = line_[p++] == '-';
+        std::uint64_t mantissa = 0;
+        int significant = 0;
+        int fraction_digits = 0;
+        bool point = false;
+        bool any_digit = false;
+        for (; p < line_.size(); ++p) {
+            char c = line_[p];
+            if (is_digit(c)) {
+                mantissa = mantissa * 10 + static_cast<std::uint64_t>(c - '0');
+                any_digit = true;
+                if (mantissa != 0) ++significant;
+                if (point) ++fraction_digits;
+            } else if (c == '.' && !point) {
+                point = true;
+            } else {
+                break;
+            }
+        }
+        std::size_t after = p;
+        while (after < line_.size() && is_blank(line_[after])) ++after;
+        bool continues = after < line_.size() && (is_digit(line_[after]) || line_[after] == '.');
+        if (!any_digit || continues || significant > 15 || fraction_digits > 15) return false;
+        double value = static_cast<double>(mantissa) / powers_of_ten[fraction_digits];
+        word.value = negative ? -value : value;
+        word.has_decimal_point = point;
+        pos_ = p;
+        return true;
+    }
+
+    //! Keywords (IF, GOTO, WHILE, DO, END) are the only places where a letter follows a letter:
+    //! a cheap test that spares ordinary words the keyword search.
+    bool letter_follows() const {
+        std::size_t p = pos_ + 1;
+        while (p < line_.size() && is_blank(line_[p])) ++p;
+        return p < line_.size() && is_letter(line_[p]);
     }
 
     //! After an address: `#`, `[`, or a sign before either, makes the value an expression.

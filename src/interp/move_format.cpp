@@ -30,10 +30,12 @@ void fixed(std::string& out, std::string_view prefix, double value) {
 }
 
 void axes_text(std::string& out, const AxisVector& p, const MachineConfig& machine) {
+    AxisSet configured;
+    for (const AxisConfig& axis : machine.axes) configured.insert(axis.axis);
     for (std::size_t i = 0; i < axis_count; ++i) {
         auto axis = static_cast<Axis>(i);
         const char name[1] = {letter(axis)};
-        if (machine.find(axis) != nullptr) fixed(out, std::string_view(name, 1), p[axis]);
+        if (configured.contains(axis)) fixed(out, std::string_view(name, 1), p[axis]);
     }
 }
 

@@ -1,4 +1,5 @@
 #pragma once
+#include <cstddef>
 #include <string>
 
 namespace nckit {
@@ -6,5 +7,11 @@ namespace nckit {
 //! Appends `value` with exactly 4 decimals, as `{:.4f}` prints it (the exact binary value
 //! rounded), fast: long programs print millions of these.
 void append_fixed4(std::string& out, double value);
+
+inline constexpr std::size_t max_fast_fixed4_chars = 24;
+//! Writes `value` with 4 decimals into `buffer` (max_fast_fixed4_chars at least) and returns the
+//! length, or 0 for the rare values only the general formatter gets right (near a rounding tie,
+//! huge, not finite).
+std::size_t format_fixed4_fast(double value, char* buffer);
 
 }  // namespace nckit
