@@ -113,6 +113,15 @@ private:
             d.alarm = alarm::format;
             return d;
         }
+        // An address takes one operand: X#1+2 is a macro format error that brackets fix.
+        bool after_expression = !block_.words.empty() && block_.words.back().expr >= 0;
+        if (after_expression && (c == '+' || c == '-' || c == '*' || c == '/')) {
+            const Word& w = block_.words.back();
+            Diagnostic d = error(column(), "macro-format",
+                                 fmt::format("an operation in an address needs brackets: {}[...]", w.letter));
+            d.alarm = alarm::format;
+            return d;
+        }
         auto byte = static_cast<unsigned char>(c);
         if (byte < 0x20 || byte >= 0x7f) {
             return error(column(), "syntax", fmt::format("unexpected byte 0x{:02x}", byte));

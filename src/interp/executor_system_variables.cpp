@@ -16,6 +16,7 @@ namespace {
 constexpr std::int64_t axes_per_block = 6;     // #5001-#5006 and the like
 constexpr std::int64_t work_offset_base = 5221;  // G54 X; +20 for each further system
 constexpr std::int64_t work_offset_stride = 20;
+constexpr double m_per_foot = 0.3048;          // G96 S is in ft/min under G20
 }  // namespace
 
 const AxisConfig* Executor::axis_by_number(std::int64_t one_based) const {
@@ -62,9 +63,13 @@ std::optional<MacroValue> Executor::read_system(std::int64_t n) const {
         case 4109: return MacroValue::of(modal_.feed / modal_.length_factor_mm);
         case 4111: return MacroValue::of(0);  // H: no tool length offsets
         case 4113: return MacroValue::of(last_mcode_);
-        case 4119:
-            return MacroValue::of(modal_.spindle.constant_surface_speed ? modal_.spindle.surface_speed_m_min
-                                                                         : modal_.spindle.rpm);
+        case 4119: {
+            // S as programmed: the surface speed is kept in m/min, but a G20 program wrote ft/min.
+            const SpindleState& spindle = modal_.spindle;
+            if (!spindle.constant_surface_speed) return MacroValue::of(spindle.rpm);
+            double speed = spindle.surface_speed_m_min;
+            return MacroValue::of(inch_units() ? speed / m_per_foot : speed);
+        }
         case 4120: return MacroValue::of(modal_.tool);
         default: break;
     }

@@ -15,6 +15,7 @@ namespace {
 constexpr std::size_t max_call_depth = 10;  // subprogram levels, macros included
 constexpr double seconds_per_hour = 3600.0;
 constexpr double timer_wrap_ms = 4294967296.0;  // #3001 wraps like a 32-bit millisecond counter
+constexpr int max_user_alarm = 9999;            // #3000 = n, n up to this
 
 bool starts_with_block_delete(std::string_view line) {
     std::size_t i = line.find_first_not_of(" \t");
@@ -23,6 +24,12 @@ bool starts_with_block_delete(std::string_view line) {
 
 bool is_axis_or_offset_letter(char letter) {
     return axis_from_letter(letter).has_value() || letter == 'I' || letter == 'J' || letter == 'K' || letter == 'R';
+}
+
+//! Addresses whose least increment is 1: M S T D H L N O.
+bool is_whole_number_letter(char letter) {
+    return letter == 'M' || letter == 'S' || letter == 'T' || letter == 'D' || letter == 'H' || letter == 'L' ||
+           letter == 'N' || letter == 'O';
 }
 
 }  // namespace
@@ -70,7 +77,7 @@ std::optional<InterpResult> ProgramRunner::fill(std::vector<Move>& pending) {
         if (!line) return InterpResult(line.diagnostics().front());
         const bool in_call = frames_.size() > 1;
         if (!line.value()) {
-            if (!in_call) return InterpResult(ProgramEnd{});
+            if (!in_call) return end_of_main();
             block_.location = make_location(source().file(), source().next_line_number(), 1);
             return InterpResult(alarm_at(block_, 1, alarm::format,
                                          fmt::format("program O{} ends without M99", frame().program_number)));
@@ -84,9 +91,13 @@ std::optional<InterpResult> ProgramRunner::fill(std::vector<Move>& pending) {
         line_offset_ = text.offset;
         if (auto error = parse_block(text.text, block_)) return InterpResult(std::move(*error));
         if (block_.tape_mark) {
-            if (in_call) return InterpResult(alarm_at(block_, 1, alarm::format, "'%' inside a called program: M99 missing"));
+            if (in_call) {
+                // A library file may open with '%', as a punched tape does: it comes before the program.
+                if (!frame().started) continue;
+                return InterpResult(alarm_at(block_, 1, alarm::format, "'%' inside a called program: M99 missing"));
+            }
             // A leading '%' opens the tape; any later one closes it and ends the program.
-            if (seen_tape_mark_ || seen_block_) return InterpResult(ProgramEnd{});
+            if (seen_tape_mark_ || seen_block_) return end_of_main();
             seen_tape_mark_ = true;
             // The program proper starts after the tape mark: M99 in the main program restarts here.
             frames_[0].program.offset = source().next_offset();
@@ -109,7 +120,7 @@ std::optional<InterpResult> ProgramRunner::run_block(const Block& block, std::ve
             current.program_number = static_cast<std::int64_t>(block.words.front().value);
             return std::nullopt;
         }
-        if (frames_.size() == 1) return InterpResult(ProgramEnd{});
+        if (frames_.size() == 1) return end_of_main();
         return InterpResult(alarm_at(block, 1, alarm::format,
                                      fmt::format("program O{} runs into the next program without M99",
                                                  current.program_number)));
@@ -149,15 +160,20 @@ std::optional<Diagnostic> ProgramRunner::resolve_words(const Block& block, Block
         Word out = word;
         out.expr = -1;
         double v = value.number;
-        if (word.letter == 'G' || word.letter == 'M') {
-            v = std::trunc(v);  // G#10 and M#10 take the integer part
+        // Rounded to the address's least input increment, as the control does; only G takes
+        // the integer part (G#10 with #10 = 1.7 is G1, but M#10 is M2).
+        if (word.letter == 'G') {
+            v = std::trunc(v);
+        } else if (is_whole_number_letter(word.letter)) {
+            v = round_half_away(v);
         } else if (is_axis_or_offset_letter(word.letter)) {
-            // Rounded to the address's least input increment, as the control does.
             auto axis = axis_from_letter(word.letter);
             const AxisConfig* config = axis ? machine_.find(*axis) : nullptr;
             bool rotary = config != nullptr && config->kind == AxisKind::rotary;
-            double increment = (inch && !rotary) ? 1e-4 : 1e-3;
-            v = round_half_away(v / increment) * increment;
+            // Dividing by the count per unit (1000 exactly) gives the very double `X1.235` reads
+            // as; multiplying by 0.001 is one bit off for many values (X0.009).
+            double per_unit = (inch && !rotary) ? 1e4 : 1e3;
+            v = round_half_away(v * per_unit) / per_unit;
         }
         out.value = v;
         resolved.words.push_back(out);
@@ -183,8 +199,14 @@ std::optional<MacroValue> ProgramRunner::read_system(std::int64_t number) const 
 std::optional<SystemVariables::WriteError> ProgramRunner::write_system(std::int64_t number, double value) {
     switch (number) {
         case 3000: {
-            // #3000 = n (MESSAGE) stops the program with alarm 3000 + n and the message.
-            auto n = static_cast<int>(round_half_away(value));
+            // #3000 = n (MESSAGE) stops the program with alarm 3000 + n and the message. A negative
+            // n would read as another alarm (2999, ...); controls take 0 up to 200 .. 9999.
+            double rounded = round_half_away(value);
+            if (!(rounded >= 0 && rounded <= max_user_alarm)) {
+                return WriteError{alarm::argument_range, fmt::format("#3000 = {}: the user alarm number must be "
+                                                                     "0 to {}", value, max_user_alarm)};
+            }
+            auto n = static_cast<int>(rounded);
             std::string message = block_.comment.empty() ? "user alarm" : block_.comment;
             return WriteError{alarm::user_base + n, message};
         }

@@ -18,6 +18,7 @@ struct LoopEntry {
     int number = 0;              //!< m of DOm
     std::uint64_t offset = 0;    //!< the DO block's line, where ENDm goes back to
     std::uint32_t line = 0;
+    std::uint32_t column = 0;    //!< where its WHILE / DO statement starts, for alarms
 };
 
 //! One level of the call stack: the main program, a subprogram (M98) or a macro (G65/G66).
@@ -63,6 +64,7 @@ private:
     std::optional<Diagnostic> end_loop(const Block& block);
     std::optional<Diagnostic> skip_past_end(const Block& block, int loop);
     [[nodiscard]] std::optional<Diagnostic> condition(const Block& block, bool& holds);
+    [[nodiscard]] InterpResult end_of_main() const;
 
     // runner_calls.cpp: G65, G66/G67, M98, M99.
     std::optional<InterpResult> run_nc_block(const Block& block, std::vector<Move>& pending);

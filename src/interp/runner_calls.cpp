@@ -23,6 +23,13 @@ constexpr std::array<int, 26> argument_variable = {
     0, 0, 0, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26  // N O P Q R S T U V W X Y Z
 };
 
+//! The whole number a P or L word names: rounded, so that a computed P[#1*1000] of
+//! 1000.9999999999999 calls O1001; -1 outside 0..99999999, where no program or count lies.
+std::int64_t code_number(const Word& word) {
+    double rounded = round_half_away(word.value);
+    return rounded >= 0 && rounded <= 99999999 ? static_cast<std::int64_t>(rounded) : -1;
+}
+
 bool moved(const std::vector<Move>& pending, std::size_t from) {
     for (std::size_t i = from; i < pending.size(); ++i) {
         const auto& what = pending[i].what;
@@ -118,7 +125,9 @@ std::optional<Diagnostic> ProgramRunner::return_from_call(const Block& block, st
     for (const Word& w : block.words) {
         if (w.letter == 'M') column = w.column;
     }
-    bool again = frames_.size() == 1 || f.repeats_left > 1;
+    // M99 P<n> goes back to the caller's N<n> at once: the repeats still to run are dropped,
+    // since N<n> is no line of the called program.
+    bool again = frames_.size() == 1 || (f.repeats_left > 1 && sequence < 0);
     if (again) {
         // M99 in the main program starts it again; in a called one it runs the next repeat.
         if (frames_.size() > 1) --f.repeats_left;
@@ -178,8 +187,8 @@ std::optional<InterpResult> ProgramRunner::run_nc_block(const Block& block, std:
         }
         Variables::Locals arguments;
         if (auto error = arguments_of(*nc, arguments)) return InterpResult(std::move(*error));
-        int repeats = l != nullptr ? static_cast<int>(std::lround(l->value)) : 1;
-        auto program = static_cast<std::int64_t>(p->value);
+        int repeats = l != nullptr ? static_cast<int>(code_number(*l)) : 1;
+        std::int64_t program = code_number(*p);
         if (call_code == 66) {
             modal_call_ = ModalCall{program, repeats, arguments};
             return std::nullopt;
@@ -208,10 +217,10 @@ std::optional<InterpResult> ProgramRunner::run_nc_block(const Block& block, std:
     if (program_end) return InterpResult(ProgramEnd{});
     if (m98 != nullptr) {
         if (p == nullptr) return InterpResult(alarm_at(*nc, m98->column, alarm::address_p_missing, "M98 needs P, the program number"));
-        auto program = static_cast<std::int64_t>(p->value);
+        std::int64_t program = code_number(*p);
         int repeats = 1;
         if (l != nullptr) {
-            repeats = static_cast<int>(std::lround(l->value));
+            repeats = static_cast<int>(code_number(*l));
         } else if (program >= 10000) {
             // The packed form M98 P<repeats><program>: the last four digits name the program.
             repeats = static_cast<int>(program / 10000);
@@ -221,7 +230,7 @@ std::optional<InterpResult> ProgramRunner::run_nc_block(const Block& block, std:
         return std::nullopt;
     }
     if (m99 != nullptr) {
-        std::int64_t sequence = p != nullptr ? static_cast<std::int64_t>(p->value) : -1;
+        std::int64_t sequence = p != nullptr ? code_number(*p) : -1;
         if (auto error = return_from_call(*nc, sequence)) return InterpResult(std::move(*error));
         return std::nullopt;
     }

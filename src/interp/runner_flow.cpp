@@ -91,7 +91,7 @@ std::optional<Diagnostic> ProgramRunner::start_loop(const Block& block, bool con
     if (f.loops.size() >= max_loop_depth) {
         return alarm_at(block, block.statement.column, alarm::loop_number, "loops nested deeper than 3");
     }
-    f.loops.push_back(LoopEntry{m, line_offset_, block.location.line});
+    f.loops.push_back(LoopEntry{m, line_offset_, block.location.line, block.statement.column});
     return std::nullopt;
 }
 
@@ -107,6 +107,18 @@ std::optional<Diagnostic> ProgramRunner::end_loop(const Block& block) {
     }
     source().seek(f.loops.back().offset, f.loops.back().line);
     return std::nullopt;
+}
+
+InterpResult ProgramRunner::end_of_main() const {
+    // The main program ends (end of file, next O program, closing '%') inside a loop whose
+    // condition held: its END is missing, as much as when the condition fails at the start.
+    const Frame& f = frames_.back();
+    if (f.loops.empty()) return ProgramEnd{};
+    const LoopEntry& loop = f.loops.back();
+    Diagnostic d = error_at(make_location(sources_[frames_.size() - 1].file(), loop.line, loop.column), "macro-alarm",
+                            fmt::format("WHILE ... DO{} has no END{}", loop.number, loop.number));
+    d.alarm = alarm::loop_mismatch;
+    return d;
 }
 
 std::optional<Diagnostic> ProgramRunner::skip_past_end(const Block& block, int loop) {

@@ -37,15 +37,17 @@ inline std::vector<double> xs(std::string_view program, InterpreterOptions optio
     return out;
 }
 
-//! The exact value `#1` holds after `setup`, read through `G96 S#1` (S is neither rounded nor
-//! scaled); nothing when #1 is vacant (the S word is dropped). The value must not be negative.
+//! The exact value `#1` holds after `setup`, or nothing when it is vacant. It is read back as
+//! the G64 P tolerance of a marked move (N99998): P is neither rounded nor scaled in mm. It must
+//! not be negative (x_of in the expression tests reads negatives, to 0.001).
 inline std::optional<double> value_after(std::string_view setup) {
-    std::string program = std::string(setup) + "\nG96 S#1\n";
+    constexpr std::int64_t mark = 99998;
+    std::string program = std::string(setup) +
+                          "\nG21\nIF [#1 EQ #0] GOTO 99999\nG64 P#1\nN99998 G1 X0 F100\nN99999\n";
     std::optional<double> out;
     for (const Move& move : moves_of(program, wide_mill())) {
-        if (const auto* io = std::get_if<Io>(&move.what); io != nullptr && io->kind == IoKind::spindle_speed) {
-            out = io->value;
-        }
+        const auto* line = std::get_if<Line>(&move.what);
+        if (line != nullptr && move.sequence_number == mark) out = line->path.tolerance_mm;
     }
     return out;
 }

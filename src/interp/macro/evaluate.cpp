@@ -72,7 +72,35 @@ private:
         return std::abs(a - b) <= settings_.comparison_tolerance * std::max({1.0, std::abs(a), std::abs(b)});
     }
 
-    std::int64_t integer(double value) { return static_cast<std::int64_t>(round_half_away(value)); }
+    //! MOD AND OR XOR BIN BCD work on whole numbers: the operand is rounded, and must lie where a
+    //! double still holds every integer (2^53); beyond, the conversion would be undefined.
+    bool integer(double value, const ExprNode& node, std::int64_t& out) {
+        constexpr double largest_exact = 9007199254740992.0;
+        double rounded = round_half_away(value);
+        if (!(std::abs(rounded) <= largest_exact)) {
+            fail(node.column, alarm::argument_range, "value too large for MOD, AND, OR, XOR, BIN or BCD");
+            return false;
+        }
+        out = static_cast<std::int64_t>(rounded);
+        return true;
+    }
+
+    MacroValue integer_operation(const ExprNode& node, double l, double r) {
+        std::int64_t a = 0;
+        std::int64_t b = 0;
+        if (!integer(l, node, a) || !integer(r, node, b)) return {};
+        switch (node.op) {
+            case ExprOp::mod:
+                if (b == 0) {
+                    fail(node.column, alarm::division_by_zero, "MOD by zero");
+                    return {};
+                }
+                return MacroValue::of(static_cast<double>(a % b));
+            case ExprOp::bit_and: return MacroValue::of(static_cast<double>(a & b));
+            case ExprOp::bit_or: return MacroValue::of(static_cast<double>(a | b));
+            default: return MacroValue::of(static_cast<double>(a ^ b));
+        }
+    }
 
     MacroValue binary(const ExprNode& node) {
         MacroValue left = eval(node.a);
@@ -91,17 +119,10 @@ private:
                     return {};
                 }
                 return MacroValue::of(l / r);
-            case ExprOp::mod: {
-                std::int64_t divisor = integer(r);
-                if (divisor == 0) {
-                    fail(node.column, alarm::division_by_zero, "MOD by zero");
-                    return {};
-                }
-                return MacroValue::of(static_cast<double>(integer(l) % divisor));
-            }
-            case ExprOp::bit_and: return MacroValue::of(static_cast<double>(integer(l) & integer(r)));
-            case ExprOp::bit_or: return MacroValue::of(static_cast<double>(integer(l) | integer(r)));
-            case ExprOp::bit_xor: return MacroValue::of(static_cast<double>(integer(l) ^ integer(r)));
+            case ExprOp::mod:
+            case ExprOp::bit_and:
+            case ExprOp::bit_or:
+            case ExprOp::bit_xor: return integer_operation(node, l, r);
             // EQ and NE tell vacant from 0; the ordering comparisons read vacant as 0.
             case ExprOp::eq:
                 return truth(left.vacant || right.vacant ? left.vacant == right.vacant : near(l, r));
@@ -155,7 +176,11 @@ private:
             case ExprFunction::ln:
                 if (x <= 0) return out_of_range("LN of zero or a negative number");
                 return MacroValue::of(std::log(x));
-            case ExprFunction::exp: return MacroValue::of(std::exp(x));
+            case ExprFunction::exp: {
+                double e = std::exp(x);
+                if (!std::isfinite(e)) return out_of_range("EXP result is not a finite number");
+                return MacroValue::of(e);
+            }
             case ExprFunction::pow: {
                 double p = std::pow(x, y);
                 if (!std::isfinite(p)) return out_of_range("POW result is not a finite number");
@@ -171,7 +196,8 @@ private:
 
     // BIN: binary-coded decimal to binary; BCD: binary to binary-coded decimal.
     MacroValue bin(double x, const ExprNode& node) {
-        std::int64_t code = integer(x);
+        std::int64_t code = 0;
+        if (!integer(x, node, code)) return {};
         if (code < 0) {
             fail(node.column, alarm::argument_range, "BIN of a negative number");
             return {};
@@ -190,7 +216,8 @@ private:
     }
 
     MacroValue bcd(double x, const ExprNode& node) {
-        std::int64_t value = integer(x);
+        std::int64_t value = 0;
+        if (!integer(x, node, value)) return {};
         if (value < 0) {
             fail(node.column, alarm::argument_range, "BCD of a negative number");
             return {};

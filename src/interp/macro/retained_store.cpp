@@ -1,7 +1,9 @@
 #include "retained_store.hpp"
 
+#include <atomic>
 #include <cerrno>
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -50,7 +52,9 @@ Result<RetainedValues> load_retained(const std::filesystem::path& path) {
             return bad(fmt::format("'{}' is not a retained variable (#500 to #999)", name));
         }
         auto [value_end, value_error] = std::from_chars(value_text.data(), value_text.data() + value_text.size(), value);
-        if (value_error != std::errc{} || value_end != value_text.data() + value_text.size()) {
+        // from_chars also reads "nan" and "inf", which no macro variable can hold.
+        bool whole_text = value_end == value_text.data() + value_text.size();
+        if (value_error != std::errc{} || !whole_text || !std::isfinite(value)) {
             return bad(fmt::format("'{}' is not a number", value_text));
         }
         values[static_cast<std::size_t>(variable - first_retained)] = MacroValue::of(value);
@@ -67,8 +71,10 @@ std::optional<Diagnostic> save_retained(const std::filesystem::path& path, const
     for (std::size_t i = 0; i < values.size(); ++i) {
         if (!values[i].vacant) text += fmt::format("#{} = {}\n", first_retained + static_cast<int>(i), values[i].number);
     }
+    // Unique per process and per call: two interpreters of one process may finish together.
+    static std::atomic<unsigned> saves{0};
     std::filesystem::path temporary = path;
-    temporary += fmt::format(".tmp{}", ::getpid());
+    temporary += fmt::format(".tmp{}.{}", ::getpid(), saves++);
     int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     if (fd < 0) return fail("cannot write retained variables");
     std::size_t written = 0;
