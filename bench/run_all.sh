@@ -10,3 +10,5 @@ for target in "$build"/bench/*_bench; do
 done
 echo "== nckit moves vs LinuxCNC rs274 -g, 1,000,000 G1 blocks"
 bash bench/throughput_vs_linuxcnc.sh "$build/src/nckit"
+echo "== nckit moves vs LinuxCNC rs274 -g, Macro B WHILE loop with trig, 200,000 iterations"
+bash bench/macro_vs_linuxcnc.sh "$build/src/nckit"

@@ -21,7 +21,8 @@ struct ExpandOptions {
 };
 
 int run_expand(const ExpandOptions& options) {
-    auto interpreter = open_program_or_report(options.program, options.machine);
+    // Expanding shows what a run would do; it is not a run, so #500-#999 stay as they were.
+    auto interpreter = open_program_or_report(options.program, options.machine, false);
     if (!interpreter) return exit_bad_input;
     std::filesystem::path temporary;
     std::FILE* out = stdout;

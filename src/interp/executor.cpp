@@ -157,12 +157,16 @@ std::optional<Diagnostic> Executor::set_feed_and_spindle(std::vector<Move>& out)
             }
             spindle.rpm = s->value;
         }
-        if (!clamp_block) {
-            Io io{IoKind::spindle_speed, 0, spindle.constant_surface_speed ? spindle.surface_speed_m_min : spindle.rpm};
-            io.constant_surface_speed = spindle.constant_surface_speed;
-            io.rpm_clamp = spindle.rpm_clamp;
-            push(out, io);
-        }
+    }
+    // Any change of the spindle's speed, mode or clamp is an event, with or without an S word:
+    // the stages after this one (and `nckit expand`) know the spindle only from the events.
+    bool mode_given = words_.group(ModalGroup::spindle_mode) >= 0;
+    bool clamp_given = ((clamp_block && words_.has('S')) || words_.has('D')) && spindle.constant_surface_speed;
+    if ((words_.has('S') && !clamp_block) || mode_given || clamp_given) {
+        Io io{IoKind::spindle_speed, 0, spindle.constant_surface_speed ? spindle.surface_speed_m_min : spindle.rpm};
+        io.constant_surface_speed = spindle.constant_surface_speed;
+        io.rpm_clamp = spindle.rpm_clamp;
+        push(out, io);
     }
     if (const Word* t = words_.word('T')) {
         modal_.tool = static_cast<int>(t->value);

@@ -1,5 +1,6 @@
 #include "nckit/interp/move_gcode.hpp"
 
+#include <cmath>
 #include <filesystem>
 #include <iterator>
 #include <variant>
@@ -19,6 +20,20 @@ void word(std::string& out, std::string_view letter, double value) {
     append_fixed4(out, std::abs(value) < 5e-5 ? 0.0 : value);
 }
 
+//! A word that four decimals in mm do not hold: feeds, which no input increment rounds (F[#9 / 3]
+//! is 266.666..., F[0.25 / 3] mm/rev 0.08333...), and thread leads given in inches (K0.0769 is
+//! 1.95326 mm). Four decimals would be off by up to 5e-5, which G95 multiplies by the rpm and a
+//! thread by its turns; up to 10 decimals are written, trailing zeros dropped down to 4.
+void precise_word(std::string& out, std::string_view letter, double value) {
+    out += ' ';
+    out += letter;
+    if (std::abs(value) < 5e-11) value = 0.0;
+    std::string text = fmt::format("{:.10f}", value);
+    std::size_t keep = text.find('.') + 5;
+    while (text.size() > keep && text.back() == '0') text.pop_back();
+    out += text;
+}
+
 const char* plane_code(Plane plane) {
     switch (plane) {
         case Plane::xy: return "G17";
@@ -31,8 +46,19 @@ const char* plane_code(Plane plane) {
 //! The centre-offset letter of a plane axis: I for X, J for Y, K for Z.
 char offset_letter(Axis axis) { return axis == Axis::X ? 'I' : axis == Axis::Y ? 'J' : 'K'; }
 
+//! Text that may stand inside a comment: G-code comments do not nest, so a '(' or ')' of a file
+//! or machine name (`part(2).nc`) would end the comment early or be refused; they become [ ].
+std::string comment_text(std::string text) {
+    for (char& c : text) {
+        if (c == '(') c = '[';
+        if (c == ')') c = ']';
+        if (c == '\n' || c == '\r') c = ' ';
+    }
+    return text;
+}
+
 void source_comment(std::string& out, const SourceLocation& where) {
-    std::string name = std::filesystem::path(where.file_name()).filename().string();
+    std::string name = comment_text(std::filesystem::path(where.file_name()).filename().string());
     fmt::format_to(std::back_inserter(out), " ({}:{})", name, where.line);
 }
 
@@ -40,11 +66,14 @@ void source_comment(std::string& out, const SourceLocation& where) {
 
 void GcodeWriter::append_header(std::string& out, const std::string& source_name) const {
     fmt::format_to(std::back_inserter(out), "( {} expanded by nckit for machine {} )\n",
-                   std::filesystem::path(source_name).filename().string(), machine_.name);
+                   comment_text(std::filesystem::path(source_name).filename().string()),
+                   comment_text(machine_.name));
     out += "( one move per block, absolute machine coordinates in mm; dwell P in ms )\n";
-    // Offsets cleared so that program coordinates are machine coordinates; radius mode because
-    // the moves carry radii whatever the program wrote.
-    out += "G21 G90 G94 G17 G40 G49 G80 G54\n";
+    // Offsets cleared (G54, and G92, which LinuxCNC keeps between programs) so that program
+    // coordinates are machine coordinates; radius mode because the moves carry radii whatever
+    // the program wrote.
+    out += "G21 G90 G94 G17 G40 G49 G80 G54 G64\n";
+    out += "G92.1\n";
     out += "G10 L2 P1";
     for (const AxisConfig& axis : machine_.axes) fmt::format_to(std::back_inserter(out), " {}0", letter(axis.axis));
     out += '\n';
@@ -68,9 +97,21 @@ void GcodeWriter::append_feed(std::string& out, const Feed& feed) {
         feed_ = -1;
     }
     if (value != feed_) {
-        word(out, "F", value);
+        precise_word(out, "F", value);
         feed_ = value;
     }
+}
+
+void GcodeWriter::append_path(std::string& out, const PathControl& path) {
+    if (path.exact_stop == path_.exact_stop && path.tolerance_mm == path_.tolerance_mm) return;
+    if (path.exact_stop) {
+        out += "G61 ";
+    } else if (path.tolerance_mm > 0) {
+        fmt::format_to(std::back_inserter(out), "G64 P{} ", path.tolerance_mm);
+    } else {
+        out += "G64 ";
+    }
+    path_ = path;
 }
 
 void GcodeWriter::append(std::string& out, const Move& move) {
@@ -78,10 +119,12 @@ void GcodeWriter::append(std::string& out, const Move& move) {
         [&](const auto& m) {
             using T = std::decay_t<decltype(m)>;
             if constexpr (std::is_same_v<T, Line>) {
+                append_path(out, m.path);
                 out += m.rapid ? "G0" : "G1";
                 append_axes(out, m.to);
                 if (!m.rapid) append_feed(out, m.feed);
             } else if constexpr (std::is_same_v<T, Arc>) {
+                append_path(out, m.path);
                 if (m.plane != plane_) {
                     out += plane_code(m.plane);
                     out += ' ';
@@ -98,7 +141,7 @@ void GcodeWriter::append(std::string& out, const Move& move) {
             } else if constexpr (std::is_same_v<T, SyncMove>) {
                 out += "G33";
                 append_axes(out, m.to);
-                word(out, "K", m.feed.mm_per_rev);  // the lead, mm/rev (LinuxCNC and nckit read K)
+                precise_word(out, "K", m.feed.mm_per_rev);  // the lead, mm/rev (LinuxCNC and nckit read K)
             } else if constexpr (std::is_same_v<T, Dwell>) {
                 fmt::format_to(std::back_inserter(out), "G4 P{}", m.seconds * 1000.0);
             } else if constexpr (std::is_same_v<T, Io>) {

@@ -206,6 +206,26 @@ TEST(SurfaceSpeed, SpeedIsNotLimitedByMaxRpm) { EXPECT_EQ(events("G96 S5000\n", 
 
 TEST(SurfaceSpeed, G50SAloneIsNotAnEvent) { EXPECT_TRUE(moves_of("G50 S2000\n", lathe()).empty()); }
 
+TEST(SurfaceSpeed, ModeChangeWithoutSIsAnEvent) {
+    // Later stages know the spindle only from events: G96 / G97 alone must still say so.
+    std::vector<Move> moves = moves_of("G97 S800 M3\nG96\nG97\n", lathe());
+    ASSERT_EQ(moves.size(), 4U);
+    const Io& css = std::get<Io>(moves[2].what);
+    EXPECT_EQ(css.kind, IoKind::spindle_speed);
+    EXPECT_TRUE(css.constant_surface_speed);
+    const Io& rpm = std::get<Io>(moves[3].what);
+    EXPECT_FALSE(rpm.constant_surface_speed);
+    EXPECT_DOUBLE_EQ(rpm.value, 800.0);
+}
+
+TEST(SurfaceSpeed, ClampChangeUnderG96IsAnEvent) {
+    std::vector<Move> moves = moves_of("G96 S200 M3\nG50 S1000\nG96 D900\n", lathe());
+    ASSERT_EQ(moves.size(), 4U);
+    EXPECT_DOUBLE_EQ(std::get<Io>(moves[2].what).rpm_clamp, 1000.0);
+    EXPECT_DOUBLE_EQ(std::get<Io>(moves[2].what).value, 200.0);
+    EXPECT_DOUBLE_EQ(std::get<Io>(moves[3].what).rpm_clamp, 900.0);
+}
+
 // ---- threading ----------------------------------------------------------------------------
 
 TEST(Thread, G33WithKLead) {

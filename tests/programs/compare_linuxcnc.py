@@ -5,8 +5,8 @@ For every program (`NN_name.ngc`) it runs `rs274 -g` and `nckit moves --json`, t
 canonical calls into absolute machine positions in mm, and compares the motions in order: kind,
 end point on every axis both sides have (X Y Z, and A B C on machines that have them), each arc's
 centre on the two plane axes and its direction, the feed rate of feeds and arcs (mm/min; under
-G95 mm/rev x the commanded rpm), and the source line of each motion. Dwells, I/O events and the
-feed of rapids are not compared.
+G95 mm/rev x the commanded rpm; not under G96, where it follows X), and the source line of each
+motion. Dwells, I/O events and the feed of rapids are not compared.
 
 How rs274's output is read (LinuxCNC 2.9):
 - STRAIGHT_TRAVERSE / STRAIGHT_FEED (x, y, z, a, b, c[, u, v, w]) and ARC_FEED (first_end,
@@ -25,6 +25,18 @@ Comments in a program's first 5 lines can set up the run:
 - `( nckit-machine: lathe.toml )`: the nckit machine file, resolved against examples/machines/;
 - `( nckit-block-delete: on )`: skip `/` blocks (rs274 -b, nckit --block-delete); both skip
   nothing by default.
+
+Expand mode (`--expand`), for programs rs274 cannot read (Fanuc Custom Macro B: `NN_name.nc` as
+well as `NN_name.ngc`): `nckit expand PROGRAM -o expanded.ngc` writes the program out as plain
+G-code (one move per block, absolute machine coordinates in mm, radius mode G8 on a diameter-mode
+lathe); rs274 runs that as the reference, and `nckit moves --json` runs the ORIGINAL program.
+Kinds, end points, arc centres and directions, and feeds are compared as above; source lines are
+not (the expanded program's lines are not the original's: each of its blocks names the source
+line in a comment, which the messages show). Called programs are looked up in `--library DIR`
+(default: the programs folder's `library/` when there is one); retained variables #500-#999 are
+kept in a scratch file, never beside the machine file. rs274 gets a tool table of the tools the
+expanded program selects, all offsets zero (alone it knows only low tool numbers: a lathe's T0101
+comes out as T101).
 
 Exit status: 0 when every program matches, 1 otherwise (and when rs274 or nckit is missing).
 """
@@ -201,11 +213,29 @@ def annotate(source: str) -> str:
     return "\n".join(out) + "\n"
 
 
+TOOL_RE = re.compile(r"^\s*T\s*(\d+)", re.IGNORECASE)
+
+
+def tool_table_for(program: Path, workdir: Path) -> Path:
+    """A LinuxCNC tool table with every tool a program selects (blocks that start with T, as
+    `nckit expand` writes them), all offsets zero: standalone rs274 knows only a few low tool
+    numbers and rejects a lathe's T101 (Fanuc T0101: tool 1, offset 1) as "not found"."""
+    tools = set()
+    for text in program.read_text(encoding="utf-8", errors="replace").splitlines():
+        m = TOOL_RE.match(text)
+        if m and int(m.group(1)) > 0:
+            tools.add(int(m.group(1)))
+    path = workdir / "tools.tbl"
+    path.write_text("".join(f"T{t} P{i} Z0 D0 ;\n" for i, t in enumerate(sorted(tools), start=1)))
+    return path
+
+
 def run_rs274(rs274: str, program: Path, block_delete: bool, workdir: Path,
-              timeout: float) -> str:
+              timeout: float, tool_table: Path | None = None) -> str:
     """rs274's canonical calls for a program. It runs in a scratch folder because it rewrites its
-    parameter file at exit; `-b` turns block delete on."""
-    cmd = [rs274, *(["-b"] if block_delete else []), "-g", str(program)]
+    parameter file at exit; `-b` turns block delete on, `-t` names a tool table."""
+    cmd = [rs274, *(["-b"] if block_delete else []),
+           *(["-t", str(tool_table)] if tool_table is not None else []), "-g", str(program)]
     proc = subprocess.run(cmd, cwd=workdir, stdin=subprocess.DEVNULL, capture_output=True,
                           text=True, timeout=timeout)
     if proc.returncode != 0:
@@ -225,8 +255,10 @@ def _numbers(args: str, call: str, count: int) -> list[float]:
     return values
 
 
-def parse_rs274(output: str, diameter_machine: bool) -> list[Motion]:
-    """rs274 canonical calls -> motions in absolute machine mm (deg)."""
+def parse_rs274(output: str, diameter_machine: bool, radius_program: bool = False) -> list[Motion]:
+    """rs274 canonical calls -> motions in absolute machine mm (deg). On a diameter-mode machine
+    a program normally runs in rs274's diameter mode (G7); `radius_program` says it is one that
+    writes radii (G8) instead, as `nckit expand` does. rs274 prints radii either way."""
     scale = 1.0                                   # mm per program unit
     g5x = {a: 0.0 for a in ALL_AXES}              # mm (deg)
     g92 = {a: 0.0 for a in ALL_AXES}
@@ -237,6 +269,7 @@ def parse_rs274(output: str, diameter_machine: bool) -> list[Motion]:
     diameter = False
     synched = False
     feed, per_rev, rpm = 0.0, False, 0.0          # F as printed, G95, commanded rpm
+    css = False                                   # G96: S is a surface speed, rpm follows X
     motions: list[Motion] = []
 
     def to_mm(axis: str, v: float) -> float:
@@ -286,7 +319,10 @@ def parse_rs274(output: str, diameter_machine: bool) -> list[Motion]:
             per_rev = _numbers(args, call, 2)[1] == 1
         elif call == "SET_SPINDLE_SPEED":
             rpm = _numbers(args, call, 2)[1]
-        elif call == "START_SPEED_FEED_SYNCH":
+        elif call == "SET_SPINDLE_MODE":
+            # "(spindle css_max_rpm)": a maximum above 0 means constant surface speed (G96).
+            css = _numbers(",".join(args.replace(",", " ").split()), call, 2)[1] > 0
+        elif call in ("START_SPEED_FEED_SYNCH", "START_SPEED_FEED_SYNC"):  # 2.9 prints ..._SYNC
             synched = True
         elif call == "STOP_SPEED_FEED_SYNCH":
             synched = False
@@ -294,12 +330,16 @@ def parse_rs274(output: str, diameter_machine: bool) -> list[Motion]:
             if _numbers(args, call, 1)[0] != 0:
                 raise ProgramError(f"coordinate system rotation is not compared: {where}")
         elif call == "USE_TOOL_LENGTH_OFFSET":
-            if any(v != 0 for v in _numbers(args, call, 3)):
+            # LinuxCNC 2.9 prints it as three space-separated triples: "x y z, a b c, u v w".
+            if any(v != 0 for v in _numbers(",".join(args.replace(",", " ").split()), call, 3)):
                 raise ProgramError(f"tool length offsets are not compared: {where}")
         elif call in UNSUPPORTED_CALLS:
             raise ProgramError(f"motion not compared: {where}")
         elif call in ("STRAIGHT_TRAVERSE", "STRAIGHT_FEED", "ARC_FEED"):
-            if diameter_machine and not diameter:
+            if diameter_machine and radius_program and diameter:
+                raise ProgramError(f"the program should write X as a radius but rs274 is in "
+                                   f"diameter mode (G7) at line {line}")
+            if diameter_machine and not radius_program and not diameter:
                 raise ProgramError(f"the nckit machine reads X as a diameter but rs274 is in "
                                    f"radius mode at line {line}: put G7 before the first motion")
             if call == "ARC_FEED":
@@ -320,8 +360,9 @@ def parse_rs274(output: str, diameter_machine: bool) -> list[Motion]:
                         {a: tolerance(a) for a in COMPARED_AXES}, where)
             if kind in ("linear", "arc"):
                 factor = scale * (rpm if per_rev else 1.0)
-                mo.feed_mm_min = feed * factor
-                mo.feed_tol = PRINT_HALF_ULP * factor + 1e-6 * mo.feed_mm_min + 1e-9
+                if not (per_rev and css):  # G95 under G96: the feed follows X, not compared
+                    mo.feed_mm_min = feed * factor
+                    mo.feed_tol = PRINT_HALF_ULP * factor + 1e-6 * mo.feed_mm_min + 1e-9
             motions.append(mo)
     return motions
 
@@ -381,12 +422,13 @@ def check_reference(motions: list[Motion], machine: dict) -> None:
 # nckit
 
 def run_nckit(nckit: str, program: Path, setup: Setup, workdir: Path,
-              timeout: float) -> list[dict]:
+              timeout: float, extra: list[str] | None = None) -> list[dict]:
     cmd = [nckit, "moves", str(program), "--json"]
     if setup.machine_file is not None:
         cmd += ["--machine", str(setup.machine_file)]
     if setup.block_delete:
         cmd.append("--block-delete")
+    cmd += extra or []
     proc = subprocess.run(cmd, cwd=workdir, stdin=subprocess.DEVNULL, capture_output=True,
                           text=True, timeout=timeout)
     if proc.returncode != 0:
@@ -436,11 +478,16 @@ def source_line(lines: list[str], number) -> str:
 
 
 def compare(ref: list[Motion], got: list[Motion], machine_axes: set[str],
-            src: list[str], check_lines: bool, check_feed: bool) -> str | None:
-    """The first difference, or None."""
+            src: list[str], check_lines: bool, check_feed: bool,
+            got_src: list[str] | None = None) -> str | None:
+    """The first difference, or None. `src` holds the lines of the program rs274 ran, `got_src`
+    those of the one nckit ran when it is another (expand mode)."""
+    if got_src is None:
+        got_src = src
     compared = [a for a in COMPARED_AXES if a in machine_axes]
     for i, (r, g) in enumerate(zip(ref, got), start=1):
-        where = f"motion {i} of {len(ref)}, {source_line(src, r.line if r.line else g.line)}"
+        where = f"motion {i} of {len(ref)}, " + (source_line(src, r.line) if r.line
+                                                 else source_line(got_src, g.line))
         both = f"\n    nckit:  {g.text}\n    rs274:  {r.text}"
         if set(g.end) != machine_axes:
             return (f"{where}: nckit `end` has axes {sorted(g.end)}, "
@@ -474,7 +521,7 @@ def compare(ref: list[Motion], got: list[Motion], machine_axes: set[str],
         more, name = (ref, "rs274") if len(ref) > len(got) else (got, "nckit")
         extra = more[min(len(ref), len(got))]
         return (f"motion count nckit {len(got)} vs rs274 {len(ref)}; first extra {name} motion "
-                f"({source_line(src, extra.line)}): {extra.text}")
+                f"({source_line(src if more is ref else got_src, extra.line)}): {extra.text}")
     return None
 
 
@@ -499,17 +546,27 @@ class Reference:
 
 
 def reference(program: Path, rs274: str, machines_dir: Path, workdir: Path,
-              timeout: float) -> Reference:
-    setup = setup_of(program, machines_dir)
+              timeout: float, setup: Setup | None = None, radius_program: bool = False,
+              block_delete: bool | None = None, tools: bool = False) -> Reference:
+    """rs274's motions for a program. `setup` defaults to the program's own `nckit-...:`
+    comments; `block_delete` (default: the setup's) is what rs274 gets; `radius_program`: see
+    parse_rs274; `tools`: rs274 gets a tool table of the tools the program selects."""
+    if setup is None:
+        setup = setup_of(program, machines_dir)
+    if block_delete is None:
+        block_delete = setup.block_delete
     if setup.machine_file is not None and not setup.machine_file.is_file():
         raise ProgramError(f"machine file {setup.machine_file} does not exist")
     machine = load_machine(setup.machine_file) if setup.machine_file else DEFAULT_MILL
-    plain = run_rs274(rs274, program, setup.block_delete, workdir, timeout)
+    table = tool_table_for(program, workdir) if tools else None
+    plain = run_rs274(rs274, program, block_delete, workdir, timeout, table)
     tagged_path = workdir / ("tagged_" + program.name)
     tagged_path.write_text(annotate(program.read_text(encoding="utf-8", errors="replace")))
-    tagged = run_rs274(rs274, tagged_path, setup.block_delete, workdir, timeout)
-    motions = parse_rs274(tagged, machine["diameter_mode"])
-    untagged = parse_rs274(plain, machine["diameter_mode"])
+    if table is not None:
+        table = tool_table_for(program, workdir)  # rs274 rewrites its tool table at exit
+    tagged = run_rs274(rs274, tagged_path, block_delete, workdir, timeout, table)
+    motions = parse_rs274(tagged, machine["diameter_mode"], radius_program)
+    untagged = parse_rs274(plain, machine["diameter_mode"], radius_program)
     if [(m.kind, m.end, m.center, m.direction) for m in motions] != \
        [(m.kind, m.end, m.center, m.direction) for m in untagged]:
         raise ProgramError("harness: the line-number comments changed rs274's motions")
@@ -532,14 +589,25 @@ def expected_json(ref: Reference) -> str:
 
 
 def run_program(program: Path, args, workdir: Path) -> tuple[bool, str]:
+    if args.expand:
+        return run_expanded_program(program, args, workdir)
     try:
         ref = reference(program, args.rs274, args.machines, workdir, args.timeout)
     except ProgramError as e:
         return False, f"FAIL {program.stem}: program: {e}"
     except subprocess.TimeoutExpired:
         return False, f"FAIL {program.stem}: rs274 timed out"
+    src = program.read_text(encoding="utf-8", errors="replace").splitlines()
+    return compare_program(program, ref, program, src, args, workdir, not args.ignore_lines)
+
+
+def compare_program(program: Path, ref: Reference, reference_program: Path, src: list[str], args,
+                    workdir: Path, check_lines: bool,
+                    extra: list[str] | None = None) -> tuple[bool, str]:
+    """`nckit moves --json` of `program` against the rs274 motions `ref` (of
+    `reference_program`, whose lines are `src`); `extra`: more nckit options."""
     try:
-        records = run_nckit(args.nckit, program, ref.setup, workdir, args.timeout)
+        records = run_nckit(args.nckit, program, ref.setup, workdir, args.timeout, extra)
         got = [nckit_motion(r, i) for i, r in enumerate(records, start=1)
                if r["kind"] in COMPARED_KINDS]
     except AssertionError as e:
@@ -550,17 +618,90 @@ def run_program(program: Path, args, workdir: Path) -> tuple[bool, str]:
     motions = ref.motions
     if args.skip_zero_length:
         motions, got = drop_zero_length(motions), drop_zero_length(got)
-    src = program.read_text(encoding="utf-8", errors="replace").splitlines()
-    diff = compare(motions, got, machine_axes, src, not args.ignore_lines, args.feed)
+    got_src = None
+    if reference_program != program:
+        got_src = program.read_text(encoding="utf-8", errors="replace").splitlines()
+    diff = compare(motions, got, machine_axes, src, check_lines, args.feed, got_src)
     if diff:
         if len(motions) != len(got) and not diff.startswith("motion count"):
             diff += f"\n    (motion count nckit {len(got)} vs rs274 {len(motions)})"
+        if reference_program != program:
+            diff += (f"\n    (rs274 ran {reference_program.name}, the expanded program: its "
+                     f"lines end in a comment naming the source line)")
         return False, f"FAIL {program.stem}: {diff}"
     return True, f"ok {program.stem} ({len(motions)} moves)"
 
 
-def select_programs(directory: Path, names: list[str]) -> list[Path]:
-    programs = sorted(directory.glob("*.ngc"))
+# ----------------------------------------------------------------------------------------------
+# Expand mode: rs274 runs what `nckit expand` wrote, nckit the original program
+
+def nckit_extra(args, workdir: Path, purpose: str) -> list[str]:
+    """Options both `nckit expand` and `nckit moves` get in expand mode: the library folder, and
+    a scratch file for retained variables (one per run, so that neither run sees what the other
+    left, and nothing is written beside the machine file)."""
+    extra = ["--vars", str(workdir / f"{purpose}.vars")]
+    if args.library is not None:
+        extra += ["--library", str(args.library)]
+    if args.max_blocks is not None:
+        extra += ["--max-blocks", str(args.max_blocks)]
+    return extra
+
+
+def expand_program(program: Path, setup: Setup, args, workdir: Path) -> Path:
+    """`nckit expand` of the program into workdir/expanded.ngc (AssertionError when it fails)."""
+    out = workdir / "expanded.ngc"
+    cmd = [args.nckit, "expand", str(program)]
+    if setup.machine_file is not None:
+        cmd += ["--machine", str(setup.machine_file)]
+    if setup.block_delete:
+        cmd.append("--block-delete")
+    cmd += nckit_extra(args, workdir, "expand") + ["-o", str(out)]
+    proc = subprocess.run(cmd, cwd=workdir, stdin=subprocess.DEVNULL, capture_output=True,
+                          text=True, timeout=args.timeout)
+    if proc.returncode != 0:
+        err = " | ".join(proc.stderr.strip().splitlines()[:3]) or "(no message)"
+        raise AssertionError(f"nckit expand exit status {proc.returncode}: {err}")
+    if not out.is_file():
+        raise AssertionError(f"nckit expand exited 0 but wrote no {out.name}")
+    return out
+
+
+def expanded_reference(program: Path, args, workdir: Path) -> tuple[Reference, Path]:
+    """rs274's motions for the expanded program. ProgramError: the original program's setup is
+    wrong; AssertionError: nckit expand failed or rs274 rejects what it wrote."""
+    setup = setup_of(program, args.machines)
+    if setup.machine_file is not None and not setup.machine_file.is_file():
+        raise ProgramError(f"machine file {setup.machine_file} does not exist")
+    expanded = expand_program(program, setup, args, workdir)
+    try:
+        # The expanded program has no deleted blocks left, and writes X as a radius (G8).
+        ref = reference(expanded, args.rs274, args.machines, workdir, args.timeout, setup=setup,
+                        radius_program=True, block_delete=False, tools=True)
+    except ProgramError as e:
+        raise AssertionError(f"rs274 on the expanded program: {e}") from None
+    return ref, expanded
+
+
+def run_expanded_program(program: Path, args, workdir: Path) -> tuple[bool, str]:
+    try:
+        ref, expanded = expanded_reference(program, args, workdir)
+    except ProgramError as e:
+        return False, f"FAIL {program.stem}: program: {e}"
+    except AssertionError as e:
+        return False, f"FAIL {program.stem}: {e}"
+    except subprocess.TimeoutExpired:
+        return False, f"FAIL {program.stem}: nckit expand or rs274 timed out"
+    if args.keep_expanded is not None:
+        args.keep_expanded.mkdir(parents=True, exist_ok=True)
+        shutil.copyfile(expanded, args.keep_expanded / (program.stem + ".ngc"))
+    # Source lines are not compared: rs274's are the expanded program's, nckit's the original's.
+    src = expanded.read_text(encoding="utf-8", errors="replace").splitlines()
+    return compare_program(program, ref, expanded, src, args, workdir, False,
+                           nckit_extra(args, workdir, "moves"))
+
+
+def select_programs(directory: Path, names: list[str], patterns=("*.ngc",)) -> list[Path]:
+    programs = sorted({p for pattern in patterns for p in directory.glob(pattern)})
     if not names:
         return programs
     chosen = []
@@ -579,7 +720,8 @@ def main() -> int:
     ap.add_argument("--nckit", default=str(DEFAULT_NCKIT), help="nckit binary (%(default)s)")
     ap.add_argument("--rs274", default=None, help="LinuxCNC rs274 binary (default: from PATH)")
     ap.add_argument("--programs", type=Path, default=Path(__file__).resolve().parent,
-                    help="folder of NN_name.ngc programs (default: this script's folder)")
+                    help="folder of NN_name.ngc programs (NN_name.nc too with --expand; "
+                         "default: this script's folder)")
     ap.add_argument("--machines", type=Path, default=DEFAULT_MACHINES,
                     help="folder the nckit-machine comments refer to (%(default)s)")
     ap.add_argument("--expected", action="store_true",
@@ -590,6 +732,16 @@ def main() -> int:
     ap.add_argument("--skip-zero-length", action="store_true",
                     help="drop straight moves of zero length on both sides before comparing")
     ap.add_argument("--timeout", type=float, default=300.0, help="seconds per run (%(default)s)")
+    ap.add_argument("--expand", action="store_true",
+                    help="rs274 runs `nckit expand PROGRAM` (macro programs: *.nc and *.ngc), "
+                         "nckit the original; source lines are not compared")
+    ap.add_argument("--library", type=Path, default=None,
+                    help="expand mode: folder of called programs (default: PROGRAMS/library "
+                         "when it exists)")
+    ap.add_argument("--max-blocks", type=int, default=None,
+                    help="expand mode: nckit's --max-blocks (default: nckit's own budget)")
+    ap.add_argument("--keep-expanded", type=Path, default=None, metavar="DIR",
+                    help="expand mode: keep each expanded program as DIR/STEM.ngc")
     args = ap.parse_args()
 
     rs274 = args.rs274 or shutil.which("rs274")
@@ -604,13 +756,24 @@ def main() -> int:
         args.nckit = str(Path(args.nckit).resolve())
     else:
         args.nckit = shutil.which(args.nckit) or args.nckit
-    if not args.expected and not os.access(args.nckit, os.X_OK):
+    if args.expand:
+        if args.library is None and (args.programs / "library").is_dir():
+            args.library = args.programs / "library"
+        if args.library is not None:
+            args.library = args.library.resolve()
+            if not args.library.is_dir():
+                print(f"error: library folder {args.library} does not exist", file=sys.stderr)
+                return 1
+        if args.keep_expanded is not None:
+            args.keep_expanded = args.keep_expanded.resolve()
+    if (args.expand or not args.expected) and not os.access(args.nckit, os.X_OK):
         print(f"error: nckit binary {args.nckit} not found or not executable; build it first "
               f"(make build) or pass --nckit", file=sys.stderr)
         return 1
-    programs = select_programs(args.programs, args.names)
+    patterns = ("*.nc", "*.ngc") if args.expand else ("*.ngc",)
+    programs = select_programs(args.programs, args.names, patterns)
     if not programs:
-        print(f"error: no *.ngc programs in {args.programs}", file=sys.stderr)
+        print(f"error: no {' or '.join(patterns)} programs in {args.programs}", file=sys.stderr)
         return 1
 
     passed = failed = 0
@@ -619,9 +782,17 @@ def main() -> int:
             workdir = Path(tempfile.mkdtemp(dir=tmp))
             if args.expected:
                 try:
-                    ref = reference(program, args.rs274, args.machines, workdir, args.timeout)
+                    if args.expand:
+                        ref, _ = expanded_reference(program, args, workdir)
+                    else:
+                        ref = reference(program, args.rs274, args.machines, workdir,
+                                        args.timeout)
                 except ProgramError as e:
                     print(f"FAIL {program.stem}: program: {e}", file=sys.stderr)
+                    failed += 1
+                    continue
+                except AssertionError as e:
+                    print(f"FAIL {program.stem}: {e}", file=sys.stderr)
                     failed += 1
                     continue
                 print(f"# {program.name}")

@@ -25,11 +25,15 @@ public:
 private:
     void append_axes(std::string& out, const AxisVector& position) const;
     void append_feed(std::string& out, const Feed& feed);
+    //! G61 or G64 P before a move whose path control differs from the last one written; a G9
+    //! block becomes G61 for that one move, since LinuxCNC has no G9.
+    void append_path(std::string& out, const PathControl& path);
 
     const MachineConfig& machine_;
     Plane plane_ = Plane::xy;
     FeedMode feed_mode_ = FeedMode::per_minute;
     double feed_ = -1;         // the F last written, in its mode's unit
+    PathControl path_;         // G64 with no tolerance, as the header sets
     bool ended_ = false;
 };
 
