@@ -70,43 +70,73 @@ std::optional<Diagnostic> ProgramRunner::save_retained() const {
     return interp::save_retained(options_.retained_file, variables_.retained());
 }
 
+bool ProgramRunner::repeating() const {
+    const Frame& f = frames_.back();
+    return frames_.size() > 1 || !f.loops.empty() || f.jumped_back;
+}
+
+const Block* ProgramRunner::cached_block() {
+    auto it = block_cache_.find(CacheKey{source().file().get(), source().next_offset()});
+    if (it == block_cache_.end()) return nullptr;
+    line_offset_ = it->first.offset;
+    source().seek(it->second.next_offset, it->second.next_line);
+    return &it->second.block;
+}
+
+const Block* ProgramRunner::remember(const Block& block) {
+    // Bounded: a program that runs through more distinct looping blocks than this starts over.
+    if (block_cache_.size() >= max_cached_blocks) block_cache_.clear();
+    CachedBlock& entry = block_cache_[CacheKey{source().file().get(), line_offset_}];
+    entry.file = source().file();
+    entry.block = block;
+    entry.next_offset = source().next_offset();
+    entry.next_line = source().next_line_number();
+    return &entry.block;
+}
+
 std::optional<InterpResult> ProgramRunner::fill(std::vector<Move>& pending) {
     if (startup_error_) return InterpResult(*startup_error_);
     while (pending.empty()) {
-        auto line = source().next();
-        if (!line) return InterpResult(line.diagnostics().front());
-        const bool in_call = frames_.size() > 1;
-        if (!line.value()) {
-            if (!in_call) return end_of_main();
-            block_.location = make_location(source().file(), source().next_line_number(), 1);
-            return InterpResult(alarm_at(block_, 1, alarm::format,
-                                         fmt::format("program O{} ends without M99", frame().program_number)));
-        }
-        const ProgramSource::Line& text = **line;
-        if (options_.block_delete && starts_with_block_delete(text.text)) {
-            seen_block_ = true;
-            continue;  // skipped unread: a deleted block is not part of the program
-        }
-        block_.location = make_location(source().file(), text.number, 1);
-        line_offset_ = text.offset;
-        if (auto error = parse_block(text.text, block_)) return InterpResult(std::move(*error));
-        if (block_.tape_mark) {
-            if (in_call) {
-                // A library file may open with '%', as a punched tape does: it comes before the program.
-                if (!frame().started) continue;
-                return InterpResult(alarm_at(block_, 1, alarm::format, "'%' inside a called program: M99 missing"));
+        // Blocks run again (loops, jumps back, calls) come parsed from the cache.
+        const Block* block = repeating() ? cached_block() : nullptr;
+        if (block == nullptr) {
+            auto line = source().next();
+            if (!line) return InterpResult(line.diagnostics().front());
+            const bool in_call = frames_.size() > 1;
+            if (!line.value()) {
+                if (!in_call) return end_of_main();
+                block_.location = make_location(source().file(), source().next_line_number(), 1);
+                return InterpResult(alarm_at(block_, 1, alarm::format,
+                                             fmt::format("program O{} ends without M99", frame().program_number)));
             }
-            // A leading '%' opens the tape; any later one closes it and ends the program.
-            if (seen_tape_mark_ || seen_block_) return end_of_main();
-            seen_tape_mark_ = true;
-            // The program proper starts after the tape mark: M99 in the main program restarts here.
-            frames_[0].program.offset = source().next_offset();
-            frames_[0].program.line = source().next_line_number();
-            continue;
+            const ProgramSource::Line& text = **line;
+            if (options_.block_delete && starts_with_block_delete(text.text)) {
+                seen_block_ = true;
+                continue;  // skipped unread: a deleted block is not part of the program
+            }
+            block_.location = make_location(source().file(), text.number, 1);
+            line_offset_ = text.offset;
+            if (auto error = parse_block(text.text, block_)) return InterpResult(std::move(*error));
+            if (block_.tape_mark) {
+                if (in_call) {
+                    // A library file may open with '%', as a punched tape does: it comes before the program.
+                    if (!frame().started) continue;
+                    return InterpResult(alarm_at(block_, 1, alarm::format, "'%' inside a called program: M99 missing"));
+                }
+                // A leading '%' opens the tape; any later one closes it and ends the program.
+                if (seen_tape_mark_ || seen_block_) return end_of_main();
+                seen_tape_mark_ = true;
+                // The program proper starts after the tape mark: M99 in the main program restarts here.
+                frames_[0].program.offset = source().next_offset();
+                frames_[0].program.line = source().next_line_number();
+                continue;
+            }
+            if (block_.words.empty() && block_.statement.kind == StatementKind::none) continue;
+            block = repeating() ? remember(block_) : &block_;
         }
-        if (block_.words.empty() && block_.statement.kind == StatementKind::none) continue;
         seen_block_ = true;
-        if (auto result = run_block(block_, pending)) return result;
+        current_block_ = block;
+        if (auto result = run_block(*block, pending)) return result;
     }
     return std::nullopt;
 }
@@ -207,7 +237,8 @@ std::optional<SystemVariables::WriteError> ProgramRunner::write_system(std::int6
                                                                      "0 to {}", value, max_user_alarm)};
             }
             auto n = static_cast<int>(rounded);
-            std::string message = block_.comment.empty() ? "user alarm" : block_.comment;
+            const std::string& comment = current_block_->comment;
+            std::string message = comment.empty() ? "user alarm" : comment;
             return WriteError{alarm::user_base + n, message};
         }
         case 3001: timer_ms_base_s_ = executor_.elapsed_s() - value / 1000.0; return std::nullopt;

@@ -2,7 +2,9 @@
 // Runs a program's blocks in the order Custom Macro B gives them: statements (assignments, IF,
 // GOTO, WHILE/DO/END), calls (G65, G66/G67, M98, M99) and the NC blocks, which it hands to the
 // Executor after evaluating their expressions.
+#include <memory>
 #include <optional>
+#include <unordered_map>
 #include <vector>
 
 #include "executor.hpp"
@@ -88,6 +90,31 @@ private:
         int repeats = 1;
         Variables::Locals arguments{};
     } modal_call_;
+
+    //! Parsed blocks of loops and called programs, by file and offset: a loop body is parsed
+    //! once, not once per pass.
+    struct CacheKey {
+        const std::string* file;  // the reader's file name; CachedBlock::file keeps it alive
+        std::uint64_t offset;
+        bool operator==(const CacheKey&) const = default;
+    };
+    struct CacheKeyHash {
+        std::size_t operator()(const CacheKey& k) const {
+            return std::hash<const void*>{}(k.file) ^ (std::hash<std::uint64_t>{}(k.offset) * 0x9E3779B97F4A7C15ULL);
+        }
+    };
+    struct CachedBlock {
+        std::shared_ptr<const std::string> file;
+        Block block;
+        std::uint64_t next_offset = 0;
+        std::uint32_t next_line = 0;
+    };
+    static constexpr std::size_t max_cached_blocks = 16384;
+    [[nodiscard]] bool repeating() const;  //!< blocks here may run again: cache and count them
+    const Block* cached_block();
+    const Block* remember(const Block& block);
+    std::unordered_map<CacheKey, CachedBlock, CacheKeyHash> block_cache_;
+    const Block* current_block_ = nullptr;  // the block being run (for #3000's message)
 
     Block block_;            // the block being read
     Block resolved_;         // its words with expressions evaluated
