@@ -79,12 +79,15 @@ std::optional<Diagnostic> Executor::run(const Block& block, std::vector<Move>& o
     // Everything below may change state, so work on copies and commit at the end: an error
     // leaves the interpreter as it was before the block.
     ModalState saved_modal = modal_;
-    Offsets saved_offsets = offsets_;
+    // Only G10, G28, G52, G92 and the like change offsets: most blocks need no copy of them.
+    const bool may_set_offsets = words_.group(ModalGroup::non_modal) >= 0;
+    std::optional<Offsets> saved_offsets;
+    if (may_set_offsets) saved_offsets = offsets_;
     AxisVector saved_position = position_;
     std::size_t saved_size = out.size();
     auto fail = [&](Diagnostic d) {
         modal_ = saved_modal;
-        offsets_ = saved_offsets;
+        if (saved_offsets) offsets_ = *saved_offsets;
         position_ = saved_position;
         out.resize(saved_size);
         return std::optional<Diagnostic>(std::move(d));
