@@ -1,0 +1,164 @@
+// nckit plan FILE: interpret and plan the whole program; print the cycle time, the number of
+// moves and each axis's peak |v|, |a|, |j|; optionally a trace of the exact trajectory.
+#include <cstdio>
+#include <filesystem>
+#include <variant>
+
+#include <fmt/format.h>
+
+#include "common.hpp"
+#include "nckit/plan/planner.hpp"
+#include "nckit/plan/trajectory_stats.hpp"
+#include "verbs.hpp"
+
+namespace nckit::cli {
+
+namespace {
+
+struct PlanOptions {
+    std::string program;
+    MachineOptions machine;
+    std::string profile;
+    bool json = false;
+    std::string trace;
+    double period_s = 0;  // 0: the machine's servo period
+    double override_pct = 100;
+};
+
+void print_report(const PlanOptions& options, const MachineConfig& machine, double cycle_time_s,
+                  std::int64_t moves, const AxisPeaks& peaks) {
+    if (options.json) {
+        std::string out = fmt::format("{{\"cycle_time_s\":{},\"moves\":{},\"axes\":{{", cycle_time_s, moves);
+        bool first = true;
+        for (std::size_t i = 0; i < axis_count; ++i) {
+            auto axis = static_cast<Axis>(i);
+            if (machine.find(axis) == nullptr) continue;
+            out += fmt::format("{}\"{}\":{{\"max_velocity\":{},\"max_acceleration\":{},\"max_jerk\":{}}}",
+                               first ? "" : ",", letter(axis), peaks.max_velocity[axis],
+                               peaks.max_acceleration[axis], peaks.max_jerk[axis]);
+            first = false;
+        }
+        fmt::print("{}}}}}\n", out);
+        return;
+    }
+    fmt::print("cycle time: {:.6f} s\nmoves: {}\n", cycle_time_s, moves);
+    fmt::print("axis {:>16} {:>18} {:>18}\n", "max |v|", "max |a|", "max |j|");
+    for (const AxisConfig& axis : machine.axes) {
+        const char* unit = axis.kind == AxisKind::rotary ? "deg" : "mm";
+        fmt::print("{:<4} {:>11.4f} {}/s {:>12.4f} {}/s2 {:>12.4f} {}/s3\n", letter(axis.axis),
+                   peaks.max_velocity[axis.axis], unit, peaks.max_acceleration[axis.axis], unit,
+                   peaks.max_jerk[axis.axis], unit);
+    }
+}
+
+int run_plan(const PlanOptions& options) {
+    auto interpreter = open_program_or_report(options.program, options.machine, false);
+    if (!interpreter) return exit_bad_input;
+    const MachineConfig& machine = interpreter->machine();
+    PlannerOptions planner_options;
+    if (!options.profile.empty()) {
+        planner_options.profile = options.profile == "trapezoid" ? ProfileKind::trapezoid : ProfileKind::scurve;
+    }
+    planner_options.feed_override = options.override_pct / 100.0;
+    Planner planner(machine, planner_options);
+    PeakTracker peaks;
+    double period_s = options.period_s > 0 ? options.period_s : machine.servo_period_s;
+    TraceWriter trace(machine, period_s);
+    std::FILE* trace_file = nullptr;
+    std::filesystem::path trace_partial;
+    std::string trace_text;
+    if (!options.trace.empty()) {
+        // Written beside its final name and renamed at the end: a bad program leaves no trace.
+        trace_partial = options.trace + ".partial";
+        trace_file = std::fopen(trace_partial.c_str(), "wb");
+        if (trace_file == nullptr) {
+            fmt::print(stderr, "{}:0:0: error: cannot write the trace\n", options.trace);
+            return exit_bad_input;
+        }
+        trace_text = trace.header();
+    }
+    auto abandon = [&] {
+        if (trace_file != nullptr) {
+            std::fclose(trace_file);
+            std::filesystem::remove(trace_partial);
+        }
+        return exit_bad_input;
+    };
+    std::int64_t moves = 0;
+    double cycle_time_s = 0;
+    auto drain = [&] {
+        TrajectoryPiece piece;
+        while (planner.pop(piece)) {
+            peaks.add(piece);
+            cycle_time_s = piece.start_time_s + piece.duration_s;
+            if (trace_file != nullptr) {
+                trace.add(piece, trace_text);
+                if (trace_text.size() > (1 << 16)) {
+                    std::fwrite(trace_text.data(), 1, trace_text.size(), trace_file);
+                    trace_text.clear();
+                }
+            }
+        }
+    };
+    for (;;) {
+        InterpResult result = interpreter->next();
+        if (std::holds_alternative<ProgramEnd>(result)) break;
+        if (const auto* diagnostic = std::get_if<Diagnostic>(&result)) {
+            print_diagnostic(*diagnostic);
+            return abandon();
+        }
+        const Move& move = std::get<Move>(result);
+        if (std::holds_alternative<Line>(move.what) || std::holds_alternative<Arc>(move.what) ||
+            std::holds_alternative<SyncMove>(move.what)) {
+            ++moves;
+        }
+        planner.push(move);
+        if (!planner.diagnostics().empty()) break;
+        drain();
+    }
+    if (!planner.diagnostics().empty()) {
+        print_diagnostics(planner.diagnostics());
+        return abandon();
+    }
+    planner.finish();
+    drain();
+    if (trace_file != nullptr) {
+        trace.finish(trace_text);
+        std::fwrite(trace_text.data(), 1, trace_text.size(), trace_file);
+        if (std::fclose(trace_file) != 0) {
+            std::filesystem::remove(trace_partial);
+            fmt::print(stderr, "{}:0:0: error: cannot write the trace\n", options.trace);
+            return exit_bad_input;
+        }
+        std::filesystem::rename(trace_partial, options.trace);
+    }
+    print_report(options, machine, cycle_time_s, moves, peaks.peaks());
+    return 0;
+}
+
+}  // namespace
+
+void add_plan_verb(CLI::App& app, int& exit_status) {
+    auto options = std::make_shared<PlanOptions>();
+    CLI::App* verb = app.add_subcommand("plan", "Plan a program's motion: cycle time and each axis's peaks");
+    verb->add_option("FILE", options->program, "NC program")->required();
+    add_machine_options(*verb, options->machine);
+    verb->add_option("--profile", options->profile, "scurve (jerk-limited) or trapezoid; default: the machine's")
+        ->check(CLI::IsMember({"scurve", "trapezoid"}));
+    verb->add_flag("--json", options->json, "print the report as one JSON object");
+    verb->add_option("--trace", options->trace, "write the trajectory as CSV, sampled every period");
+    verb->add_option("--period", options->period_s, "trace sampling period, s (default: the machine's servo period)")
+        ->check(CLI::PositiveNumber);
+    verb->add_option("--override", options->override_pct, "feed override, percent (0 < PCT <= 200)")
+        ->check(CLI::Range(0.0, 200.0));
+    verb->callback([options, &exit_status] {
+        if (options->override_pct <= 0) {
+            fmt::print(stderr, "error: --override must be above 0 %\n");
+            exit_status = exit_bad_input;
+            return;
+        }
+        exit_status = run_plan(*options);
+    });
+}
+
+}  // namespace nckit::cli

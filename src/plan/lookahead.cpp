@@ -1,0 +1,190 @@
+#include "lookahead.hpp"
+
+#include <algorithm>
+
+#include "profile_inverse.hpp"
+
+namespace nckit::plan_detail {
+
+namespace {
+// Plans at least this many new segments at a time: a pass costs about the window's unfinished
+// tail, so batching keeps the cost per segment constant (see add()).
+constexpr std::size_t min_batch = 64;
+
+//! A run's limits are its first segment's, lowered by this factor, and never change: a later
+//! segment joins only when its own limits are at least the run's. Limits that only ever stay
+//! put keep the look-ahead's bounds monotone as the window grows (a committed end speed stays
+//! reachable), and the margin lets segments whose limits differ by rounding share a run.
+constexpr double run_margin = 1.0 - 1e-9;
+
+bool joins(double segment_limit, double run_limit) {
+    return segment_limit >= run_limit && segment_limit <= run_limit * run_spread;
+}
+}  // namespace
+
+bool Lookahead::joins_last_run(const WindowSegment& segment) const {
+    if (runs_.empty() || segments_.back().junction_max <= 0) return false;
+    const WindowRun& run = runs_.back();
+    // Bounded so a run is never more than a quarter of the window (the forced commit keeps half).
+    if (run.count >= std::max<std::size_t>(1, window_ / 4)) return false;
+    const ProfileLimits& l = segment.limits;
+    const bool at_least = l.max_velocity >= run.limits.max_velocity &&
+                          l.max_acceleration >= run.limits.max_acceleration && l.max_jerk >= run.limits.max_jerk;
+    if (!at_least) return false;
+    if (joins(l.max_velocity, run.limits.max_velocity) && joins(l.max_acceleration, run.limits.max_acceleration) &&
+        (l.max_jerk == run.limits.max_jerk || joins(l.max_jerk, run.limits.max_jerk))) {
+        return true;
+    }
+    // A faster segment too short to speed up much on its own (e.g. the short lines left between
+    // blends in a chain of tiny segments) loses less by running at the run's limits than by
+    // ending the run, which would bring the acceleration to 0 at both its ends.
+    return segment.path.length < speed_change_distance(run.limits.max_velocity, l.max_velocity, run.limits, kind_);
+}
+
+void Lookahead::add(WindowSegment segment) {
+    segment.junction_max = std::min(segment.junction_max, segment.limits.max_velocity * run_margin);
+    if (!segments_.empty()) {
+        WindowSegment& last = segments_.back();
+        last.junction_max = std::min(last.junction_max, segment.limits.max_velocity * run_margin);
+        runs_.back().junction_max = std::min(last.junction_max, runs_.back().limits.max_velocity);
+    }
+    if (joins_last_run(segment)) {
+        WindowRun& run = runs_.back();
+        ++run.count;
+        run.length += segment.path.length;
+        run.junction_max = std::min(segment.junction_max, run.limits.max_velocity);
+    } else {
+        WindowRun run;
+        run.count = 1;
+        run.length = segment.path.length;
+        run.limits = {segment.limits.max_velocity * run_margin, segment.limits.max_acceleration * run_margin,
+                      segment.limits.max_jerk * run_margin};
+        run.junction_max = std::min(segment.junction_max, run.limits.max_velocity);
+        runs_.push_back(run);
+    }
+    segments_.push_back(std::move(segment));
+    ++added_since_plan_;
+    if (segments_.size() >= window_) {
+        plan(window_ / 2);
+    } else if (added_since_plan_ >= std::max(min_batch, left_after_plan_)) {
+        // Planning when the new segments outnumber the unfinished ones left by the last pass
+        // makes the passes' total cost linear in the program (each segment is visited a bounded
+        // number of times on average), yet pieces come out soon after their timing is known.
+        plan(window_);
+    }
+}
+
+void Lookahead::add_event(WindowEvent event, const AxisVector& position) {
+    if (segments_.empty()) {
+        emit_event(event, position);
+    } else {
+        segments_.back().after.push_back(std::move(event));
+    }
+}
+
+void Lookahead::finish() {
+    finished_ = true;
+    plan(0);
+}
+
+void Lookahead::plan(std::size_t keep_at_most) {
+    added_since_plan_ = 0;
+    const std::size_t n = runs_.size();
+    if (n == 0) return;
+    // Backward: the end of the window is a stop until more segments arrive; bound[k] is the
+    // highest end speed of run k from which every later junction limit can still be kept.
+    runs_[n - 1].bound = 0;
+    for (std::size_t k = n - 1; k-- > 0;) {
+        const WindowRun& next = runs_[k + 1];
+        WindowRun& here = runs_[k];
+        // max_end_speed(d, v) >= v: once the next bound reaches this junction's limit, no call.
+        if (next.bound >= here.junction_max) {
+            here.bound = here.junction_max;
+            continue;
+        }
+        // The highest speed from which the next run can brake to its bound *or stop*. With jerk
+        // limits braking to a stop can fit where braking to a low speed does not (see
+        // speed_change.hpp), so max_end_speed(d, w) dips as w rises from 0; taking the larger
+        // of the two makes the bound grow with w, so bounds only rise as the window grows and a
+        // committed speed stays stoppable. From any start at or below it, plan_profile's end
+        // speed is never above the one asked for (it picks the highest reachable below).
+        double brake_from = max_end_speed(next.length, next.bound, next.limits, kind_);
+        if (kind_ == ProfileKind::scurve && next.bound > 0) {
+            brake_from = std::max(brake_from, max_end_speed(next.length, 0.0, next.limits, kind_));
+        }
+        here.bound = std::min(here.junction_max, brake_from);
+    }
+    // Forward: commit runs while their end speed is final, i.e. no later segment could raise it
+    // (it is held by its junction limit or by how fast it can speed up, not by the window's
+    // stop); when the window is too full, commit as planned anyway.
+    while (!runs_.empty()) {
+        const WindowRun& r = runs_.front();
+        double v_end = 0;
+        bool final_speed = finished_;
+        if (start_speed_ >= r.bound) {
+            v_end = r.bound;
+            final_speed = final_speed || r.bound >= r.junction_max;
+        } else {
+            const double reachable = max_end_speed(r.length, start_speed_, r.limits, kind_);
+            v_end = std::min(r.bound, reachable);
+            final_speed = final_speed || r.bound >= std::min(r.junction_max, reachable);
+        }
+        if (!final_speed && segments_.size() <= keep_at_most) break;
+        commit_front(v_end);
+    }
+    left_after_plan_ = segments_.size();
+}
+
+void Lookahead::commit_front(double v_end) {
+    const WindowRun run = runs_.front();
+    runs_.pop_front();
+    const Profile profile = plan_profile(run.length, start_speed_, v_end, run.limits, kind_);
+    const double total_s = profile.duration_s();
+    start_speed_ = profile.end_velocity;
+    ProfileWalker walker(profile);
+    double offset_mm = 0;
+    double offset_s = 0;
+    const double run_start_s = clock_s_;
+    for (std::size_t i = 0; i < run.count; ++i) {
+        WindowSegment& s = segments_.front();
+        const bool last = i + 1 == run.count;
+        const double end_mm = offset_mm + s.path.length;
+        const double end_s = last ? total_s : std::max(offset_s, walker.time_at(end_mm));
+        TrajectoryPiece piece;
+        piece.kind = PieceKind::motion;
+        piece.profile = profile;
+        piece.profile_offset_s = offset_s;
+        piece.profile_offset_mm = offset_mm;
+        piece.ends_profile = last;
+        piece.start_time_s = run_start_s + offset_s;
+        piece.duration_s = end_s - offset_s;
+        piece.where = std::move(s.where);
+        piece.sequence_number = s.sequence_number;
+        piece.blend = s.blend;
+        piece.segment = s.path;
+        clock_s_ = run_start_s + end_s;
+        output_.push_back(std::move(piece));
+        if (!s.after.empty()) {
+            const AxisVector end = end_point(s.path);
+            for (const WindowEvent& event : s.after) emit_event(event, end);
+        }
+        offset_mm = end_mm;
+        offset_s = end_s;
+        segments_.pop_front();
+    }
+}
+
+void Lookahead::emit_event(const WindowEvent& event, const AxisVector& position) {
+    TrajectoryPiece piece;
+    piece.kind = event.kind;
+    piece.segment = make_line(position, position);
+    piece.start_time_s = clock_s_;
+    piece.duration_s = event.kind == PieceKind::dwell ? std::max(0.0, event.dwell_s) : 0.0;
+    piece.where = event.where;
+    piece.sequence_number = event.sequence_number;
+    piece.io = event.io;
+    clock_s_ += piece.duration_s;
+    output_.push_back(std::move(piece));
+}
+
+}  // namespace nckit::plan_detail

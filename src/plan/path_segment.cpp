@@ -1,0 +1,197 @@
+#include "nckit/plan/path_segment.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace nckit {
+
+namespace {
+
+constexpr double two_pi = 2.0 * std::numbers::pi;
+// Arc end points closer than this in the plane make a full circle (mm), as in the interpreter.
+constexpr double same_point_mm = 1e-9;
+
+double norm_of(const AxisVector& d, std::size_t first, std::size_t last) {
+    double sum = 0;
+    for (std::size_t i = first; i < last; ++i) sum += d[i] * d[i];
+    return std::sqrt(sum);
+}
+
+//! The length of a displacement: XYZ, else UVW, else ABC (LinuxCNC's rule).
+double measured_length(const AxisVector& d) {
+    const double xyz = norm_of(d, 0, 3);
+    if (xyz > 0) return xyz;
+    const double uvw = norm_of(d, 6, 9);
+    if (uvw > 0) return uvw;
+    return norm_of(d, 3, 6);
+}
+
+struct PlaneIndex {
+    std::size_t first, second, normal;
+};
+
+PlaneIndex plane_index(Plane plane) {
+    switch (plane) {
+        case Plane::xy: return {0, 1, 2};
+        case Plane::zx: return {2, 0, 1};
+        case Plane::yz: return {1, 2, 0};
+    }
+    return {0, 1, 2};
+}
+
+}  // namespace
+
+AxisVector position_at(const PathSegment& g, double s) {
+    AxisVector p;
+    for (std::size_t i = 0; i < axis_count; ++i) p[i] = g.origin[i] + g.rate[i] * s;
+    if (g.radius_mm > 0) {
+        const double theta = g.angle_rate * s;
+        const double c = g.radius_mm * std::cos(theta);
+        const double sn = g.radius_mm * std::sin(theta);
+        for (std::size_t i = 0; i < 3; ++i) p[i] += c * g.u[i] + sn * g.v[i];
+    }
+    return p;
+}
+
+PathPoint point_at(const PathSegment& g, double s) {
+    PathPoint out;
+    for (std::size_t i = 0; i < axis_count; ++i) {
+        out.position[i] = g.origin[i] + g.rate[i] * s;
+        out.d1[i] = g.rate[i];
+    }
+    if (g.radius_mm > 0) {
+        const double k = g.angle_rate;
+        const double theta = k * s;
+        const double c = std::cos(theta);
+        const double sn = std::sin(theta);
+        const double r1 = g.radius_mm * k;
+        const double r2 = r1 * k;
+        const double r3 = r2 * k;
+        for (std::size_t i = 0; i < 3; ++i) {
+            const double radial = c * g.u[i] + sn * g.v[i];      // (cos, sin)
+            const double tangential = -sn * g.u[i] + c * g.v[i];  // its θ-derivative
+            out.position[i] += g.radius_mm * radial;
+            out.d1[i] += r1 * tangential;
+            out.d2[i] = -r2 * radial;
+            out.d3[i] = -r3 * tangential;
+        }
+    }
+    return out;
+}
+
+DerivativeBounds derivative_bounds(const PathSegment& g) {
+    DerivativeBounds b;
+    for (std::size_t i = 0; i < axis_count; ++i) b.d1[i] = std::abs(g.rate[i]);
+    if (!(g.radius_mm > 0)) return b;  // a line: |p'| = 1 on the measured axes by construction
+    // r(cos θ u_i + sin θ v_i) peaks at r·sqrt(u_i² + v_i²) over θ; each derivative adds a factor k.
+    const double r1 = g.radius_mm * std::abs(g.angle_rate);
+    for (std::size_t i = 0; i < 3; ++i) {
+        const double w = std::hypot(g.u[i], g.v[i]);
+        b.d1[i] += r1 * w;
+        b.d2[i] = r1 * std::abs(g.angle_rate) * w;
+        b.d3[i] = b.d2[i] * std::abs(g.angle_rate);
+    }
+    // |p'_xyz|² = |rate|² + r1² + 2 r1 rate·(−sin θ u + cos θ v) ≤ |rate|² + r1² + 2 r1 |(rate·u, rate·v)|.
+    double rate2 = 0;
+    double ru = 0;
+    double rv = 0;
+    for (std::size_t i = 0; i < 3; ++i) {
+        rate2 += g.rate[i] * g.rate[i];
+        ru += g.rate[i] * g.u[i];
+        rv += g.rate[i] * g.v[i];
+    }
+    b.speed_factor = std::sqrt(rate2 + r1 * r1 + 2.0 * r1 * std::hypot(ru, rv));
+    return b;
+}
+
+PathSegment make_line(const AxisVector& from, const AxisVector& to) {
+    PathSegment g;
+    g.shape = SegmentShape::line;
+    g.origin = from;
+    const AxisVector d = to - from;
+    g.length = measured_length(d);
+    if (g.length > 0) {
+        for (std::size_t i = 0; i < axis_count; ++i) g.rate[i] = d[i] / g.length;
+    }
+    return g;
+}
+
+PathSegment make_arc(const Arc& arc) {
+    const PlaneIndex p = plane_index(arc.plane);
+    const double c1 = arc.center[p.first];
+    const double c2 = arc.center[p.second];
+    const double f1 = arc.from[p.first] - c1;
+    const double f2 = arc.from[p.second] - c2;
+    const double r = std::hypot(f1, f2);
+    if (!(r > 0)) return make_line(arc.from, arc.to);
+
+    double sweep = two_pi * arc.full_turns;
+    const double t1 = arc.to[p.first] - c1;
+    const double t2 = arc.to[p.second] - c2;
+    const bool ccw = arc.direction == ArcDirection::counterclockwise;
+    if (std::hypot(arc.to[p.first] - arc.from[p.first], arc.to[p.second] - arc.from[p.second]) < same_point_mm) {
+        sweep += two_pi;
+    } else {
+        double a = ccw ? std::atan2(t2, t1) - std::atan2(f2, f1) : std::atan2(f2, f1) - std::atan2(t2, t1);
+        while (a <= 0) a += two_pi;
+        while (a > two_pi) a -= two_pi;
+        sweep += a;
+    }
+
+    PathSegment g;
+    g.shape = SegmentShape::arc;
+    g.radius_mm = r;
+    g.origin = arc.from;
+    g.origin[p.first] = c1;
+    g.origin[p.second] = c2;
+    g.u[p.first] = f1 / r;
+    g.u[p.second] = f2 / r;
+    // v is u turned a quarter in the direction of travel.
+    g.v[p.first] = ccw ? -g.u[p.second] : g.u[p.second];
+    g.v[p.second] = ccw ? g.u[p.first] : -g.u[p.first];
+    // Everything the circle does not cover moves linearly: the helix axis, the other axes, and
+    // the (small) radius mismatch of the end point.
+    const double ce = std::cos(sweep);
+    const double se = std::sin(sweep);
+    AxisVector rest = arc.to - arc.from;
+    for (std::size_t i = 0; i < 3; ++i) rest[i] = arc.to[i] - g.origin[i] - r * (ce * g.u[i] + se * g.v[i]);
+    const double circle = r * sweep;
+    g.length = std::hypot(circle, norm_of(rest, 0, 3));
+    for (std::size_t i = 0; i < axis_count; ++i) g.rate[i] = rest[i] / g.length;
+    g.angle_rate = sweep / g.length;
+    return g;
+}
+
+PathSegment make_circular(const AxisVector& start, const std::array<double, 3>& centre,
+                          const std::array<double, 3>& tangent, double sweep_rad, const AxisVector& other_rate) {
+    PathSegment g;
+    g.shape = SegmentShape::arc;
+    g.origin = start;
+    double r2 = 0;
+    for (std::size_t i = 0; i < 3; ++i) {
+        g.origin[i] = centre[i];
+        g.u[i] = start[i] - centre[i];
+        r2 += g.u[i] * g.u[i];
+    }
+    g.radius_mm = std::sqrt(r2);
+    double along = 0;
+    for (std::size_t i = 0; i < 3; ++i) {
+        g.u[i] /= g.radius_mm;
+        along += tangent[i] * g.u[i];
+    }
+    // Remove the rounding-level radial part of the tangent so u, v are orthonormal.
+    double v2 = 0;
+    for (std::size_t i = 0; i < 3; ++i) {
+        g.v[i] = tangent[i] - along * g.u[i];
+        v2 += g.v[i] * g.v[i];
+    }
+    const double vn = std::sqrt(v2);
+    for (std::size_t i = 0; i < 3; ++i) g.v[i] /= vn;
+    g.length = g.radius_mm * sweep_rad;
+    g.angle_rate = 1.0 / g.radius_mm;
+    for (std::size_t i = 3; i < axis_count; ++i) g.rate[i] = other_rate[i];
+    return g;
+}
+
+}  // namespace nckit

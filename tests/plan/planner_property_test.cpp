@@ -1,0 +1,153 @@
+// Randomised invariants over whole programs (fixed seed): lines, arcs, helices, chains of
+// 1 µm – 0.1 mm segments, reversals, exact stops, rotary moves, rapids, I/O and dwells, with
+// both profile kinds and small windows. Every piece is sampled exactly at many times.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include "move_builder.hpp"
+#include "nckit/plan/planner.hpp"
+#include "trajectory_check.hpp"
+
+namespace nckit {
+namespace {
+
+using plan_test::MoveBuilder;
+using plan_test::xyz;
+
+class ProgramSource {
+public:
+    explicit ProgramSource(std::uint64_t seed) : random_(seed) {}
+
+    MoveBuilder next(int moves) {
+        MoveBuilder b;
+        b.position = xyz(uniform(-10, 10), uniform(-10, 10), uniform(-5, 5), uniform(-90, 90));
+        double feed = decade(2, 3.8);
+        while (static_cast<int>(b.moves.size()) < moves) {
+            if (uniform(0, 1) < 0.1) feed = decade(2, 3.8);
+            PathControl path;
+            const double c = uniform(0, 1);
+            path.exact_stop = c < 0.05;
+            path.tolerance_mm = c < 0.5 ? 0 : decade(-3, -0.5);
+            const double kind = uniform(0, 1);
+            if (kind < 0.35) {
+                // A chain of short lines along a wavy path, with occasional sharp turns.
+                const int n = static_cast<int>(uniform(5, 60));
+                const double step = decade(-3, -1);
+                double heading = uniform(0, 2 * std::numbers::pi);
+                for (int k = 0; k < n; ++k) {
+                    heading += uniform(0, 1) < 0.1 ? uniform(-3, 3) : uniform(-0.05, 0.05);
+                    AxisVector to = b.position;
+                    to[0] += step * std::cos(heading);
+                    to[1] += step * std::sin(heading);
+                    b.line(to, feed, path);
+                }
+            } else if (kind < 0.55) {
+                AxisVector to = b.position + xyz(uniform(-30, 30), uniform(-30, 30), uniform(-5, 5));
+                if (uniform(0, 1) < 0.2) to[3] += uniform(-180, 180);
+                b.line(to, feed, path);
+                if (uniform(0, 1) < 0.2) b.line(b.position - xyz(uniform(0, 3), 0, 0), feed, path);  // reversal-ish
+            } else if (kind < 0.75) {
+                const Plane plane = static_cast<Plane>(static_cast<int>(uniform(0, 2.999)));
+                const std::size_t f = plane == Plane::xy ? 0 : plane == Plane::zx ? 2 : 1;
+                const std::size_t s = plane == Plane::xy ? 1 : plane == Plane::zx ? 0 : 2;
+                const std::size_t nrm = 3 - f - s;
+                const double r = decade(-0.5, 1.3);
+                const double a0 = uniform(0, 2 * std::numbers::pi);
+                const double a1 = uniform(0, 2 * std::numbers::pi);
+                AxisVector centre = b.position;
+                centre[f] -= r * std::cos(a0);
+                centre[s] -= r * std::sin(a0);
+                AxisVector to = centre;
+                to[f] += r * std::cos(a1);
+                to[s] += r * std::sin(a1);
+                to[nrm] = b.position[nrm] + (uniform(0, 1) < 0.4 ? uniform(-5, 5) : 0.0);  // helix
+                to[3] = b.position[3] + (uniform(0, 1) < 0.2 ? uniform(-90, 90) : 0.0);
+                centre[nrm] = b.position[nrm];
+                centre[3] = b.position[3];
+                const auto dir = uniform(0, 1) < 0.5 ? ArcDirection::clockwise : ArcDirection::counterclockwise;
+                b.arc(to, centre, dir, feed, path, plane);
+            } else if (kind < 0.82) {
+                b.rapid(b.position + xyz(uniform(-50, 50), uniform(-50, 50), uniform(-10, 10)));
+            } else if (kind < 0.9) {
+                b.line(b.position + xyz(0, 0, 0, uniform(-360, 360)), feed, path);  // rotary only
+            } else if (kind < 0.95) {
+                b.mcode(uniform(0, 1) < 0.5 ? 8 : 9);
+            } else {
+                b.dwell(uniform(0, 0.1));
+            }
+        }
+        return b;
+    }
+
+private:
+    double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(random_); }
+    double decade(double lo, double hi) { return std::pow(10.0, uniform(lo, hi)); }
+    std::mt19937_64 random_;
+};
+
+//! The programmed corner a blend rounds: the end of the move it carries.
+AxisVector corner_of(const Move& move) {
+    if (const auto* l = std::get_if<Line>(&move.what)) return l->to;
+    return {};
+}
+
+TEST(PlannerProperty, RandomProgramsKeepEveryLimit) {
+    ProgramSource source(20240601);
+    double worst = 0;
+    std::size_t samples = 0;
+    for (int program = 0; program < 300; ++program) {
+        const MoveBuilder b = source.next(120);
+        const ProfileKind kind = program % 3 == 2 ? ProfileKind::trapezoid : ProfileKind::scurve;
+        MachineConfig m = plan_test::test_machine(kind);
+        PlannerOptions o;
+        o.window_moves = program % 4 == 0 ? 8 : 10000;  // small windows force commits
+        o.feed_override = program % 5 == 0 ? 1.7 : 1.0;
+        const PlanResult r = plan_moves(b.moves, m, o);
+        ASSERT_TRUE(r.diagnostics.empty());
+        auto feed_of = [&](const TrajectoryPiece& p) {
+            return b.feeds_mm_s[static_cast<std::size_t>(p.sequence_number)] * o.feed_override;
+        };
+        const plan_test::CheckStats stats = plan_test::check_trajectory(r.trajectory.pieces, m, kind, b.position, feed_of, 16);
+        ASSERT_FALSE(::testing::Test::HasFailure()) << "program " << program;
+        worst = std::max(worst, stats.worst_limit_ratio);
+        samples += stats.samples;
+        for (const TrajectoryPiece& p : r.trajectory.pieces) {
+            if (!p.blend) continue;
+            const Move& move = b.moves[static_cast<std::size_t>(p.sequence_number)];
+            const auto& line = std::get<Line>(move.what);
+            const double tol = line.path.tolerance_mm > 0 ? line.path.tolerance_mm : o.default_blend_tolerance_mm;
+            const AxisVector c = corner_of(move);
+            // The arc's midpoint is its farthest point from the two lines and its nearest to the corner.
+            const AxisVector mid = position_at(p.segment, 0.5 * p.segment.length);
+            ASSERT_LE(std::hypot(mid[0] - c[0], mid[1] - c[1], mid[2] - c[2]), tol * (1 + 1e-9) + 1e-12);
+        }
+    }
+    EXPECT_GT(worst, 0.99);  // the limits are used, not just respected
+    std::printf("samples %zu, worst limit ratio %.12f\n", samples, worst);
+}
+
+//! A long chain of tiny collinear-ish segments reaches the programmed feed.
+TEST(PlannerProperty, ShortSegmentChainsReachTheFeed) {
+    MachineConfig m = plan_test::test_machine();
+    for (double step : {0.001, 0.01, 0.1}) {
+        MoveBuilder b;
+        // A gentle arc of radius 200 mm drawn with `step` segments, at F1200.
+        const double r = 200;
+        b.position = xyz(r, 0);
+        const int n = static_cast<int>(20.0 / step);
+        for (int k = 1; k <= n; ++k) {
+            const double t = step * k / r;
+            b.line(xyz(r * std::cos(t), r * std::sin(t)), 1200);
+        }
+        const PlanResult res = plan_moves(b.moves, m);
+        double top = 0;
+        for (const TrajectoryPiece& p : res.trajectory.pieces) top = std::max(top, sample(p, p.start_time_s).path_velocity);
+        EXPECT_NEAR(top, 20, 1e-6) << step;
+    }
+}
+
+}  // namespace
+}  // namespace nckit

@@ -1,0 +1,229 @@
+// The planner on fixed programs: junction rules, a square, a circle of short lines, stops.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "move_builder.hpp"
+#include "nckit/plan/planner.hpp"
+#include "trajectory_check.hpp"
+
+namespace nckit {
+namespace {
+
+using plan_test::MoveBuilder;
+using plan_test::xyz;
+
+struct Planned {
+    std::vector<TrajectoryPiece> pieces;
+    plan_test::CheckStats stats;
+};
+
+Planned plan_and_check(const MoveBuilder& b, const MachineConfig& m, PlannerOptions o = {}) {
+    const ProfileKind kind = o.profile.value_or(m.profile);
+    PlanResult r = plan_moves(b.moves, m, o);
+    EXPECT_TRUE(r.diagnostics.empty());
+    Planned out;
+    out.pieces = std::move(r.trajectory.pieces);
+    auto feed_of = [&](const TrajectoryPiece& p) {
+        return b.feeds_mm_s[static_cast<std::size_t>(p.sequence_number)] * o.feed_override;
+    };
+    out.stats = plan_test::check_trajectory(out.pieces, m, kind, b.position, feed_of);
+    return out;
+}
+
+double duration(const std::vector<TrajectoryPiece>& pieces) {
+    return pieces.empty() ? 0 : pieces.back().start_time_s + pieces.back().duration_s;
+}
+
+//! Speed ṡ at the end of the motion piece made by move `seq` (the last such piece).
+double end_speed_of(const std::vector<TrajectoryPiece>& pieces, std::int64_t seq) {
+    double v = -1;
+    for (const TrajectoryPiece& p : pieces) {
+        if (p.kind == PieceKind::motion && p.sequence_number == seq && !p.blend) {
+            v = sample(p, p.start_time_s + p.duration_s).path_velocity;
+        }
+    }
+    return v;
+}
+
+TEST(Planner, SquareExactStopTakesTheRestToRestOptimum) {
+    for (ProfileKind kind : {ProfileKind::scurve, ProfileKind::trapezoid}) {
+        MachineConfig m = plan_test::test_machine(kind);
+        MoveBuilder b;
+        PathControl stop{true, 0};
+        b.line(xyz(100, 0), 3000, stop);
+        b.line(xyz(100, 100), 3000, stop);
+        b.line(xyz(0, 100), 3000, stop);
+        b.line(xyz(0, 0), 3000, stop);
+        const Planned p = plan_and_check(b, m);
+        ASSERT_EQ(p.pieces.size(), 4U);
+        const ProfileLimits lim{50, 500, kind == ProfileKind::scurve ? 50000 : 1e300};
+        const double side = plan_profile(100, 0, 0, lim, kind).duration_s();
+        EXPECT_NEAR(duration(p.pieces), 4 * side, 1e-8 * side);  // runs plan at limits − 1e-9
+        EXPECT_NEAR(p.stats.max_xyz_speed, 50, 1e-7);
+    }
+}
+
+class PlannerSquare : public ::testing::TestWithParam<double> {};
+
+TEST_P(PlannerSquare, BlendsStayWithinTolerance) {
+    MachineConfig m = plan_test::test_machine();
+    MoveBuilder b;
+    // With 0.05 mm a 90° corner allows only ~5.5 mm/s (R = 0.12 mm), hardly better than a
+    // stop; with 1 mm (R = 2.4 mm) it passes at 24.5 mm/s and saves about 20 ms a corner.
+    const double tolerance = GetParam();
+    PathControl g64{false, tolerance};
+    b.line(xyz(100, 0), 3000, g64);
+    b.line(xyz(100, 100), 3000, g64);
+    b.line(xyz(0, 100), 3000, g64);
+    b.line(xyz(0, 0), 3000, g64);
+    const Planned p = plan_and_check(b, m);
+    ASSERT_EQ(p.pieces.size(), 7U);  // 4 sides, 3 blends
+    const double side = plan_profile(100, 0, 0, {50, 500, 50000}, ProfileKind::scurve).duration_s();
+    if (tolerance >= 1) {
+        EXPECT_LT(duration(p.pieces), 4 * side - 0.05);  // 8.376 s vs 8.44 s
+    }
+    for (const TrajectoryPiece& piece : p.pieces) {
+        if (!piece.blend) continue;
+        // Every blend of a 90° corner keeps within 0.05 mm of it.
+        const AxisVector mid = position_at(piece.segment, 0.5 * piece.segment.length);
+        double best = 1e9;
+        for (const AxisVector& c : {xyz(100, 0), xyz(100, 100), xyz(0, 100)}) {
+            best = std::min(best, std::hypot(mid[0] - c[0], mid[1] - c[1]));
+        }
+        EXPECT_NEAR(best, tolerance, 1e-9);
+        EXPECT_GT(sample(piece, piece.start_time_s).path_velocity, 0);
+    }
+}
+INSTANTIATE_TEST_SUITE_P(Tolerances, PlannerSquare, ::testing::Values(0.05, 1.0));
+
+TEST(Planner, CircleOfShortLinesReachesTheFeed) {
+    MachineConfig m = plan_test::test_machine();
+    MoveBuilder b;
+    const double r = 10;
+    b.position = xyz(r, 0);
+    const int n = 2000;
+    for (int k = 1; k <= n; ++k) {
+        const double t = 2 * std::numbers::pi * k / n;
+        b.line(xyz(r * std::cos(t), r * std::sin(t)), 3000);
+    }
+    const Planned p = plan_and_check(b, m);
+    // Blends of radius ~10 mm: 50 mm/s needs v²/r = 250 = a/2, exactly the arc allocation.
+    EXPECT_GT(p.stats.max_xyz_speed, 0.999 * 50);
+    // Close to the time at full feed: length / feed plus a start and a stop.
+    EXPECT_LT(duration(p.pieces), 2 * std::numbers::pi * r / 50 + 0.5);
+}
+
+TEST(Planner, TangentLineArcPassesAtSpeedAndCornerStops) {
+    MachineConfig m = plan_test::test_machine();
+    MoveBuilder b;
+    b.line(xyz(10, 0), 1200);                                                   // 0
+    b.arc(xyz(20, 10), xyz(10, 10), ArcDirection::counterclockwise, 1200);      // 1 tangent
+    b.line(xyz(20, 20), 1200);                                                  // 2 tangent
+    b.arc(xyz(30, 20), xyz(25, 20), ArcDirection::counterclockwise, 1200);      // 3 corner: stop
+    b.line(xyz(40, 20), 1200, {true, 0});                                       // 4 G9
+    b.line(xyz(50, 20), 1200);                                                  // 5 reversal next
+    b.line(xyz(45, 20), 1200);                                                  // 6
+    const Planned p = plan_and_check(b, m);
+    EXPECT_NEAR(end_speed_of(p.pieces, 0), 20, 1e-7);
+    EXPECT_NEAR(end_speed_of(p.pieces, 1), 20, 1e-7);
+    EXPECT_EQ(end_speed_of(p.pieces, 2), 0.0);
+    EXPECT_EQ(end_speed_of(p.pieces, 4), 0.0);
+    EXPECT_EQ(end_speed_of(p.pieces, 5), 0.0);
+}
+
+TEST(Planner, ArcSpeedKeepsNormalAccelerationWithinHalfTheLimit) {
+    MachineConfig m = plan_test::test_machine();
+    MoveBuilder b;
+    b.position = xyz(1, 0);
+    b.arc(xyz(1, 0), xyz(0, 0), ArcDirection::counterclockwise, 6000);  // full circle r = 1
+    const Planned p = plan_and_check(b, m);
+    // v²/r <= a/2 gives sqrt(250) mm/s, the jerk share v³/r² <= j/3 gives 25.5 mm/s.
+    EXPECT_NEAR(p.stats.max_xyz_speed, std::sqrt(250.0), 1e-6);
+}
+
+TEST(Planner, WaitingMcodesStopOthersPassAtSpeed) {
+    MachineConfig m = plan_test::test_machine();
+    MoveBuilder b;
+    b.line(xyz(10, 0), 1200);  // 0
+    b.mcode(7);                // 1: the machine's exact-stop M-code
+    b.line(xyz(20, 0), 1200);  // 2
+    b.mcode(3);                // 3: passes at speed
+    b.line(xyz(30, 0), 1200);  // 4
+    b.mcode(0, true);          // 5: M0 waits
+    b.line(xyz(40, 0), 1200);  // 6
+    b.dwell(0.5);              // 7
+    b.line(xyz(50, 0), 1200);  // 8
+    const Planned p = plan_and_check(b, m);
+    EXPECT_EQ(end_speed_of(p.pieces, 0), 0.0);
+    EXPECT_NEAR(end_speed_of(p.pieces, 2), 20, 1e-7);
+    EXPECT_EQ(end_speed_of(p.pieces, 4), 0.0);
+    EXPECT_EQ(end_speed_of(p.pieces, 6), 0.0);
+    int events = 0;
+    for (const TrajectoryPiece& piece : p.pieces) {
+        if (piece.kind == PieceKind::io) {
+            ++events;
+            EXPECT_NEAR(start_point(piece.segment)[0], piece.io.number == 3 ? 20 : piece.io.number == 7 ? 10 : 30, 1e-12);
+        }
+        if (piece.kind == PieceKind::dwell) {
+            EXPECT_DOUBLE_EQ(piece.duration_s, 0.5);
+        }
+    }
+    EXPECT_EQ(events, 3);
+}
+
+TEST(Planner, RapidsRunAtTheAxisLimitsInStraightLines) {
+    MachineConfig m = plan_test::test_machine();
+    MoveBuilder b;
+    b.rapid(xyz(200, 0));
+    b.rapid(xyz(200, 200, 0, 90));
+    const Planned p = plan_and_check(b, m);
+    ASSERT_EQ(p.pieces.size(), 2U);
+    EXPECT_NEAR(p.stats.max_xyz_speed, 100, 1e-6);
+    EXPECT_EQ(sample(p.pieces[0], p.pieces[0].duration_s).path_velocity, 0.0);
+}
+
+TEST(Planner, FeedOverrideScalesFeeds) {
+    MachineConfig m = plan_test::test_machine();
+    MoveBuilder b;
+    b.line(xyz(100, 0), 1200);
+    PlannerOptions o;
+    o.feed_override = 1.5;
+    const Planned p = plan_and_check(b, m, o);
+    EXPECT_NEAR(p.stats.max_xyz_speed, 30, 1e-7);
+}
+
+TEST(Planner, StreamingEmitsFinalPiecesBeforeTheEnd) {
+    MachineConfig m = plan_test::test_machine();
+    MoveBuilder b;
+    for (int k = 1; k <= 5000; ++k) b.line(xyz(0.01 * k, 0), 3000);
+    PlannerOptions o;
+    o.window_moves = 1000;
+    Planner planner(m, o);
+    TrajectoryPiece piece;
+    std::size_t popped = 0;
+    for (const Move& move : b.moves) {
+        planner.push(move);
+        while (planner.pop(piece)) ++popped;
+    }
+    EXPECT_GT(popped, 4000U);
+    planner.finish();
+    while (planner.pop(piece)) ++popped;
+    EXPECT_EQ(popped, 5000U);
+    // Same result as unlimited look-ahead here: the braking needs far fewer than 500 segments.
+    const Planned whole = plan_and_check(b, m);
+    EXPECT_EQ(whole.pieces.size(), 5000U);
+}
+
+TEST(Planner, ReportsMovesWithoutFeed) {
+    MachineConfig m = plan_test::test_machine();
+    MoveBuilder b;
+    b.line(xyz(10, 0), 0);
+    PlanResult r = plan_moves(b.moves, m);
+    ASSERT_EQ(r.diagnostics.size(), 1U);
+    EXPECT_EQ(r.diagnostics[0].code, "no-feed");
+}
+
+}  // namespace
+}  // namespace nckit
