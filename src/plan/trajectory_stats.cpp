@@ -58,7 +58,8 @@ void TraceWriter::row(const TrajectorySample& s, std::string& out) const {
     fmt::format_to(std::back_inserter(out), "{}", s.t);
     for (const AxisVector* values : {&s.position, &s.velocity, &s.acceleration, &s.jerk}) {
         for (std::size_t i = 0; i < axis_count; ++i) {
-            if (axes_.contains(static_cast<Axis>(i))) fmt::format_to(std::back_inserter(out), ",{}", (*values)[i]);
+            // + 0.0 turns -0 into 0: a trace read by people and plotting tools.
+            if (axes_.contains(static_cast<Axis>(i))) fmt::format_to(std::back_inserter(out), ",{}", (*values)[i] + 0.0);
         }
     }
     out += '\n';

@@ -1,0 +1,74 @@
+#!/usr/bin/env python3
+"""The `nckit plan` contract: report keys, JSON precision, the trace CSV, options, exit status."""
+import json
+import pathlib
+import subprocess
+import sys
+import tempfile
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+failures = []
+checks = 0
+
+
+def check(condition, what):
+    global checks
+    checks += 1
+    if not condition:
+        failures.append(what)
+        print(f"FAIL {what}")
+
+
+def plan(nckit, *args):
+    return subprocess.run([nckit, "plan", *map(str, args)], capture_output=True, text=True, timeout=120)
+
+
+def main() -> int:
+    nckit = sys.argv[1]
+    square = ROOT / "bench" / "planner_programs" / "square_100.ngc"
+    run = plan(nckit, square, "--json")
+    check(run.returncode == 0, f"plan --json exits 0 ({run.stderr.strip()})")
+    report = json.loads(run.stdout)
+    check(set(report) >= {"cycle_time_s", "moves", "axes"}, "report keys")
+    check(report["moves"] == 4, "moves counted")
+    check(set(report["axes"]) == {"X", "Y", "Z"}, "one entry per configured axis")
+    for axis, peaks in report["axes"].items():
+        check(set(peaks) == {"max_velocity", "max_acceleration", "max_jerk"}, f"{axis} peak keys")
+        check(peaks["max_acceleration"] <= 500.0 * (1 + 1e-6), f"{axis} acceleration within the limit")
+        check(peaks["max_velocity"] <= 100.0 * (1 + 1e-6), f"{axis} velocity within the limit")
+    check(len(repr(report["cycle_time_s"])) > 8, "full double precision")
+
+    trapezoid = json.loads(plan(nckit, square, "--json", "--profile", "trapezoid").stdout)
+    check(trapezoid["cycle_time_s"] < report["cycle_time_s"], "the jerk limit makes the S-curve longer")
+    slow = json.loads(plan(nckit, square, "--json", "--override", "50").stdout)
+    check(slow["cycle_time_s"] > report["cycle_time_s"] * 1.5, "50 % override takes longer")
+    check(plan(nckit, square, "--override", "0").returncode == 2, "0 % override is refused")
+
+    with tempfile.TemporaryDirectory() as tmp:
+        trace = pathlib.Path(tmp) / "square.csv"
+        run = plan(nckit, square, "--trace", trace, "--period", "0.002")
+        check(run.returncode == 0 and "cycle time" in run.stdout, "text report")
+        rows = trace.read_text().splitlines()
+        check(rows[0] == "t,X,Y,Z,vX,vY,vZ,aX,aY,aZ,jX,jY,jZ", "trace header")
+        times = [float(r.split(",")[0]) for r in rows[1:]]
+        check(abs(times[1] - 0.002) < 1e-12 and times[0] == 0.0, "trace period")
+        expected_rows = int(report["cycle_time_s"] / 0.002) + 1
+        check(abs(len(times) - expected_rows) <= 1, f"trace covers the cycle ({len(times)} rows, {expected_rows} expected)")
+        last = rows[-1].split(",")
+        check(abs(float(last[1])) < 1e-3 and abs(float(last[2])) < 1e-3, "trace ends at the program's end point")
+
+        bad = pathlib.Path(tmp) / "bad.ngc"
+        bad.write_text("G21 G90\nG0 X5.\nG1 X10.\nM30\n")
+        bad_trace = pathlib.Path(tmp) / "bad.csv"
+        run = plan(nckit, bad, "--trace", bad_trace)
+        check(run.returncode == 2, "a bad program exits 2")
+        check("bad.ngc:3:1: error:" in run.stderr, "FILE:LINE:COL error")
+        check(not bad_trace.exists() and not pathlib.Path(str(bad_trace) + ".partial").exists(),
+              "a bad program leaves no trace file")
+        check(run.stdout == "", "a bad program prints no report")
+    print(f"{checks - len(failures)} passed, {len(failures)} failed")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
