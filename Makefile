@@ -22,6 +22,11 @@ run: build
 	@$(NCKIT) moves $(DEMO) --summary
 	@echo "== first moves"
 	@$(NCKIT) moves $(DEMO) | head -n 12
+	@echo "== nckit plan $(DEMO)   (S-curve look-ahead: cycle time and each axis's peaks)"
+	@$(NCKIT) plan $(DEMO)
+	@echo "== the eccentric shaft, a Custom Macro B program"
+	@$(NCKIT) moves examples/eccentric/eccentric_shaft.nc --machine examples/machines/lathe.toml \
+	    --library examples/eccentric/library --summary
 
 test: build
 	@ctest --preset release
