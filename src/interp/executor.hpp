@@ -54,6 +54,7 @@ private:
     std::optional<Diagnostic> arc(GCode motion, const AxisVector& target, std::vector<Move>& out);
     std::optional<Diagnostic> sync(const AxisVector& target, std::vector<Move>& out);
     std::optional<Diagnostic> check_travel(const AxisVector& low, const AxisVector& high) const;
+    std::optional<Diagnostic> check_line_travel(const AxisVector& target) const;
     [[nodiscard]] AxisVector target_from_words(bool machine_coordinates) const;
     [[nodiscard]] bool block_has_axis_words() const;
     [[nodiscard]] Feed current_feed() const;

@@ -76,6 +76,17 @@ std::optional<Diagnostic> Executor::check_travel(const AxisVector& low, const Ax
     return std::nullopt;
 }
 
+std::optional<Diagnostic> Executor::check_line_travel(const AxisVector& target) const {
+    // A straight move stays inside the box of its end points, so they are all there is to check.
+    AxisVector low;
+    AxisVector high;
+    for (std::size_t i = 0; i < axis_count; ++i) {
+        low[i] = std::min(position_[i], target[i]);
+        high[i] = std::max(position_[i], target[i]);
+    }
+    return check_travel(low, high);
+}
+
 std::optional<Diagnostic> Executor::move(std::vector<Move>& out) {
     GCode non_modal = words_.group(ModalGroup::non_modal);
     if (non_modal == g(28)) return home(out);
@@ -94,13 +105,7 @@ std::optional<Diagnostic> Executor::move(std::vector<Move>& out) {
 }
 
 std::optional<Diagnostic> Executor::straight(GCode motion, const AxisVector& target, std::vector<Move>& out) {
-    AxisVector low;
-    AxisVector high;
-    for (std::size_t i = 0; i < axis_count; ++i) {
-        low[i] = std::min(position_[i], target[i]);
-        high[i] = std::max(position_[i], target[i]);
-    }
-    if (auto e = check_travel(low, high)) return e;
+    if (auto e = check_line_travel(target)) return e;
     Line line{position_, target, Feed{}, motion == g(0), modal_.path};
     if (!line.rapid) line.feed = current_feed();
     if (words_.group(ModalGroup::exact_stop) >= 0) line.path.exact_stop = true;
@@ -132,13 +137,7 @@ std::optional<Diagnostic> Executor::sync(const AxisVector& target, std::vector<M
     }
     double lead = offset_value(*lead_word);
     if (lead <= 0) return error(lead_word->column, "bad-value", "thread lead must be positive");
-    AxisVector low;
-    AxisVector high;
-    for (std::size_t i = 0; i < axis_count; ++i) {
-        low[i] = std::min(position_[i], target[i]);
-        high[i] = std::max(position_[i], target[i]);
-    }
-    if (auto e = check_travel(low, high)) return e;
+    if (auto e = check_line_travel(target)) return e;
     Feed feed;
     feed.mode = FeedMode::per_revolution;
     feed.mm_per_rev = lead;
