@@ -8,5 +8,6 @@ void add_moves_verb(CLI::App& app, int& exit_status);
 void add_check_verb(CLI::App& app, int& exit_status);
 void add_expand_verb(CLI::App& app, int& exit_status);
 void add_plan_verb(CLI::App& app, int& exit_status);
+void add_notch_verb(CLI::App& app, int& exit_status);
 
 }  // namespace nckit::cli

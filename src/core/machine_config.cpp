@@ -45,13 +45,14 @@ bool read_into(TableReader& reader, std::string_view key, Need need, Sign sign, 
     return value.has_value();
 }
 
-void read_exact_stop_mcodes(TableReader& reader, MachineConfig& config, ConfigSink& sink) {
-    const toml::array* codes = reader.array("exact_stop_mcodes", Need::optional);
+//! A list of M-code numbers such as `exact_stop_mcodes = [24, 25]`; absent means empty.
+void read_mcode_list(TableReader& reader, std::string_view key, std::vector<int>& out, ConfigSink& sink) {
+    const toml::array* codes = reader.array(key, Need::optional);
     if (codes == nullptr) return;
+    const std::string what = fmt::format("each entry of '{}'", key);
     for (const toml::node& code : *codes) {
-        const std::optional<int> value =
-            detail::to_int(code, "each entry of 'exact_stop_mcodes'", Sign::non_negative, sink);
-        if (value) config.exact_stop_mcodes.push_back(*value);
+        const std::optional<int> value = detail::to_int(code, what, Sign::non_negative, sink);
+        if (value) out.push_back(*value);
     }
 }
 
@@ -69,7 +70,16 @@ void read_machine(const toml::table& table, MachineConfig& config, ConfigSink& s
     if (std::optional<bool> diameter = reader.flag("diameter_mode", Need::optional)) {
         config.diameter_mode = *diameter;
     }
-    read_exact_stop_mcodes(reader, config, sink);
+    read_mcode_list(reader, "exact_stop_mcodes", config.exact_stop_mcodes, sink);
+    read_mcode_list(reader, "laser_on_mcodes", config.laser_on_mcodes, sink);
+    read_mcode_list(reader, "laser_off_mcodes", config.laser_off_mcodes, sink);
+    for (int code : config.laser_off_mcodes) {
+        if (config.is_laser_on_mcode(code)) {
+            sink.error(reader.region_of("laser_off_mcodes"), "config-value",
+                       fmt::format("M{} is in both 'laser_on_mcodes' and 'laser_off_mcodes'", code));
+            break;
+        }
+    }
 
     // Each list of names sits beside the enum values it maps to, in the same order.
     constexpr std::array decimal_point_modes{DecimalPointInput::calculator,
@@ -256,6 +266,14 @@ AxisSet MachineConfig::axis_set() const {
     AxisSet set;
     for (const AxisConfig& a : axes) set.insert(a.axis);
     return set;
+}
+
+bool MachineConfig::is_laser_on_mcode(int code) const {
+    return std::find(laser_on_mcodes.begin(), laser_on_mcodes.end(), code) != laser_on_mcodes.end();
+}
+
+bool MachineConfig::is_laser_off_mcode(int code) const {
+    return std::find(laser_off_mcodes.begin(), laser_off_mcodes.end(), code) != laser_off_mcodes.end();
 }
 
 bool MachineConfig::is_exact_stop_mcode(int code) const {

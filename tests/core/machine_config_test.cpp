@@ -73,6 +73,8 @@ name = "demo-mill"
 servo_period_s = 0.001
 diameter_mode = false          # lathe: X words are diameters
 exact_stop_mcodes = [24, 25, 27, 28]   # M-codes that need the axes at rest
+laser_on_mcodes = [27]
+laser_off_mcodes = [28, 128]
 
 [[axis]]
 name = "X"                     # X Y Z A B C U V W
@@ -96,6 +98,11 @@ encoder_counts = 4096
     EXPECT_DOUBLE_EQ(m.servo_period_s, 0.001);
     EXPECT_FALSE(m.diameter_mode);
     EXPECT_EQ(m.exact_stop_mcodes, (std::vector<int>{24, 25, 27, 28}));
+    EXPECT_EQ(m.laser_on_mcodes, (std::vector<int>{27}));
+    EXPECT_EQ(m.laser_off_mcodes, (std::vector<int>{28, 128}));
+    EXPECT_TRUE(m.is_laser_on_mcode(27));
+    EXPECT_TRUE(m.is_laser_off_mcode(128));
+    EXPECT_FALSE(m.is_laser_off_mcode(27));
     EXPECT_EQ(m.decimal_point_input, DecimalPointInput::calculator);
     EXPECT_EQ(m.profile, ProfileKind::scurve);
     ASSERT_EQ(m.axes.size(), 1U);
@@ -164,6 +171,8 @@ TEST(MachineConfig, DefaultsOmittedOptionalKeys) {
     EXPECT_DOUBLE_EQ(result->servo_period_s, 0.001);
     EXPECT_FALSE(result->diameter_mode);
     EXPECT_TRUE(result->exact_stop_mcodes.empty());
+    EXPECT_TRUE(result->laser_on_mcodes.empty());
+    EXPECT_TRUE(result->laser_off_mcodes.empty());
     Result<MachineConfig> no_backlash = parse_machine_config(without("backlash"), "m.toml");
     ASSERT_TRUE(no_backlash.ok());
     EXPECT_DOUBLE_EQ(no_backlash->axes[0].backlash, 0.0);
@@ -310,6 +319,20 @@ TEST(MachineConfigError, ExactStopMcodesAreNonNegativeIntegers) {
               "4:22: each entry of 'exact_stop_mcodes' must be an integer, not a string");
     EXPECT_EQ(only_error(with("servo_period_s", "0.001\nexact_stop_mcodes = 24")),
               "4:21: 'exact_stop_mcodes' must be an array, not an integer");
+}
+
+TEST(MachineConfigError, LaserMcodesAreNonNegativeIntegers) {
+    EXPECT_EQ(only_error(with("servo_period_s", "0.001\nlaser_on_mcodes = [27, -3]")),
+              "4:24: each entry of 'laser_on_mcodes' must be zero or more, not -3");
+    EXPECT_EQ(only_error(with("servo_period_s", "0.001\nlaser_off_mcodes = [\"M28\"]")),
+              "4:21: each entry of 'laser_off_mcodes' must be an integer, not a string");
+    EXPECT_EQ(only_error(with("servo_period_s", "0.001\nlaser_off_mcodes = 28")),
+              "4:20: 'laser_off_mcodes' must be an array, not an integer");
+}
+
+TEST(MachineConfigError, LaserMcodeCannotSwitchBothWays) {
+    EXPECT_EQ(only_error(with("servo_period_s", "0.001\nlaser_on_mcodes = [27]\nlaser_off_mcodes = [28, 27]")),
+              "5:20: M27 is in both 'laser_on_mcodes' and 'laser_off_mcodes'");
 }
 
 TEST(MachineConfigError, CollectsEveryErrorInFileOrder) {

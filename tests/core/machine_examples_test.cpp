@@ -69,6 +69,10 @@ TEST(MachineExamples, Notcher) {
     EXPECT_TRUE(m.axis_set().contains(Axis::Z));
     for (int code : {24, 25, 27, 28}) EXPECT_TRUE(m.is_exact_stop_mcode(code)) << code;
     EXPECT_FALSE(m.is_exact_stop_mcode(3));
+    EXPECT_EQ(m.exact_stop_mcodes, (std::vector<int>{24, 25, 27, 28}));
+    EXPECT_EQ(m.laser_on_mcodes, (std::vector<int>{27}));
+    EXPECT_EQ(m.laser_off_mcodes, (std::vector<int>{28, 128}));
+    EXPECT_FALSE(m.is_exact_stop_mcode(128));  // switches off at speed, by position
     for (const AxisConfig& a : m.axes) {
         EXPECT_DOUBLE_EQ(a.max_velocity, 100.0);
         EXPECT_DOUBLE_EQ(a.max_acceleration, 500.0);

@@ -42,6 +42,11 @@ struct MachineConfig {
     double servo_period_s = 0.001;  //!< s, trajectory sampling period
     bool diameter_mode = false;     //!< lathe: X words are diameters, Moves carry radii
     std::vector<int> exact_stop_mcodes;  //!< M-codes that need the axes at rest
+    //! M-codes that switch a cutting beam on / off (laser notching). A code in both this and
+    //! exact_stop_mcodes switches at rest; one that is not an exact stop switches where the path
+    //! passes it, at speed (the planner places a non-waiting I/O event by position).
+    std::vector<int> laser_on_mcodes;
+    std::vector<int> laser_off_mcodes;
     DecimalPointInput decimal_point_input = DecimalPointInput::calculator;
     ProfileKind profile = ProfileKind::scurve;
     std::vector<AxisConfig> axes;   //!< in the order the config lists them
@@ -51,6 +56,8 @@ struct MachineConfig {
     [[nodiscard]] const AxisConfig* find(Axis axis) const;
     [[nodiscard]] AxisSet axis_set() const;
     [[nodiscard]] bool is_exact_stop_mcode(int code) const;
+    [[nodiscard]] bool is_laser_on_mcode(int code) const;
+    [[nodiscard]] bool is_laser_off_mcode(int code) const;
 };
 
 //! The built-in 3-axis mill used when no `--machine` is given.
