@@ -16,6 +16,8 @@ constexpr std::size_t min_batch = 64;
 //! put keep the look-ahead's bounds monotone as the window grows (a committed end speed stays
 //! reachable), and the margin lets segments whose limits differ by rounding share a run.
 constexpr double run_margin = 1.0 - 1e-9;
+//! Trapezoid runs merge segments whose limits are equal up to rounding (see joins_last_run).
+constexpr double trapezoid_run_spread = 1.0 + 4e-9;
 
 bool joins(double segment_limit, double run_limit) {
     return segment_limit >= run_limit && segment_limit <= run_limit * run_spread;
@@ -28,6 +30,15 @@ bool Lookahead::joins_last_run(const WindowSegment& segment) const {
     // Bounded so a run is never more than a quarter of the window (the forced commit keeps half).
     if (run.count >= std::max<std::size_t>(1, window_ / 4)) return false;
     const ProfileLimits& l = segment.limits;
+    if (kind_ == ProfileKind::trapezoid) {
+        // A trapezoid's acceleration may jump at any junction, so ending a run costs nothing:
+        // the passes choose its end speed as they would inside a run, and each run is then
+        // planned time-optimally with its own limits. Only segments whose limits are the run's
+        // (up to rounding) share one, so none runs below its own limits.
+        return l.max_velocity >= run.limits.max_velocity && l.max_acceleration >= run.limits.max_acceleration &&
+               l.max_velocity <= run.limits.max_velocity * trapezoid_run_spread &&
+               l.max_acceleration <= run.limits.max_acceleration * trapezoid_run_spread;
+    }
     const bool at_least = l.max_velocity >= run.limits.max_velocity &&
                           l.max_acceleration >= run.limits.max_acceleration && l.max_jerk >= run.limits.max_jerk;
     if (!at_least) return false;
@@ -41,6 +52,36 @@ bool Lookahead::joins_last_run(const WindowSegment& segment) const {
     return segment.path.length < speed_change_distance(run.limits.max_velocity, l.max_velocity, run.limits, kind_);
 }
 
+bool Lookahead::lowers_last_run(const WindowSegment& segment, ProfileLimits& lowered) const {
+    // Trapezoid runs gain nothing from merging (joins_last_run); a lower segment starts a run.
+    if (kind_ != ProfileKind::scurve || runs_.empty() || segments_.back().junction_max <= 0) return false;
+    const WindowRun& run = runs_.back();
+    if (run.count >= std::max<std::size_t>(1, window_ / 4)) return false;
+    const ProfileLimits& l = segment.limits;
+    const ProfileLimits& first = run.first_limits;
+    // Within run_spread of the run's first limits both ways, so the run never drifts far below
+    // any of its segments.
+    auto near = [](double value, double reference) {
+        return value == reference || (value * run_spread >= reference && value <= reference * run_spread);
+    };
+    if (!near(l.max_velocity, first.max_velocity) || !near(l.max_acceleration, first.max_acceleration) ||
+        !near(l.max_jerk, first.max_jerk)) {
+        return false;
+    }
+    lowered = {std::min(run.limits.max_velocity, l.max_velocity * run_margin),
+               std::min(run.limits.max_acceleration, l.max_acceleration * run_margin),
+               std::min(run.limits.max_jerk, l.max_jerk * run_margin)};
+    // Safety. The run is the window's last: every pass so far planned it with a stop at its end
+    // (bound 0), from a length at most run.length, so the bound of the run before it never
+    // exceeded max_end_speed(run.length, 0) with the old limits. Later passes give it at least
+    // max_end_speed(length, 0) of its limits then (see plan()). If the longer run with the
+    // lower limits can still brake from that speed, no bound upstream can fall below what it
+    // was, so every speed already committed stays reachable and stoppable.
+    const double before = max_end_speed(run.length, 0.0, run.limits, kind_);
+    const double after = max_end_speed(run.length + segment.path.length, 0.0, lowered, kind_);
+    return after >= before;
+}
+
 void Lookahead::add(WindowSegment segment) {
     segment.junction_max = std::min(segment.junction_max, segment.limits.max_velocity * run_margin);
     if (!segments_.empty()) {
@@ -48,8 +89,11 @@ void Lookahead::add(WindowSegment segment) {
         last.junction_max = std::min(last.junction_max, segment.limits.max_velocity * run_margin);
         runs_.back().junction_max = std::min(last.junction_max, runs_.back().limits.max_velocity);
     }
-    if (joins_last_run(segment)) {
+    ProfileLimits lowered;
+    const bool joins = joins_last_run(segment);
+    if (joins || lowers_last_run(segment, lowered)) {
         WindowRun& run = runs_.back();
+        if (!joins) run.limits = lowered;
         ++run.count;
         run.length += segment.path.length;
         run.junction_max = std::min(segment.junction_max, run.limits.max_velocity);
@@ -59,6 +103,7 @@ void Lookahead::add(WindowSegment segment) {
         run.length = segment.path.length;
         run.limits = {segment.limits.max_velocity * run_margin, segment.limits.max_acceleration * run_margin,
                       segment.limits.max_jerk * run_margin};
+        run.first_limits = run.limits;
         run.junction_max = std::min(segment.junction_max, run.limits.max_velocity);
         runs_.push_back(run);
     }

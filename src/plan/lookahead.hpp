@@ -3,12 +3,51 @@
 // forward passes over them, and the commit of pieces whose timing is final.
 #include <cstddef>
 #include <cstdint>
-#include <deque>
+#include <algorithm>
+#include <utility>
 #include <vector>
 
 #include "nckit/plan/trajectory.hpp"
 
 namespace nckit::plan_detail {
+
+//! A FIFO on one growing ring buffer. std::deque allocates a block per 512 bytes, i.e. one per
+//! element for pieces and window segments; this reuses its storage, so a streaming planner
+//! allocates nothing per move once the window has filled.
+template <class T>
+class RingQueue {
+public:
+    [[nodiscard]] bool empty() const { return size_ == 0; }
+    [[nodiscard]] std::size_t size() const { return size_; }
+    T& operator[](std::size_t i) { return slots_[(head_ + i) & mask_]; }
+    const T& operator[](std::size_t i) const { return slots_[(head_ + i) & mask_]; }
+    T& front() { return slots_[head_]; }
+    T& back() { return (*this)[size_ - 1]; }
+    const T& back() const { return (*this)[size_ - 1]; }
+    void push_back(T&& value) {
+        if (size_ == slots_.size()) grow();
+        (*this)[size_] = std::move(value);
+        ++size_;
+    }
+    void push_back(const T& value) { push_back(T(value)); }
+    void pop_front() {
+        head_ = (head_ + 1) & mask_;
+        --size_;
+    }
+
+private:
+    void grow() {
+        std::vector<T> bigger(std::max<std::size_t>(16, 2 * slots_.size()));
+        for (std::size_t i = 0; i < size_; ++i) bigger[i] = std::move((*this)[i]);
+        slots_ = std::move(bigger);
+        mask_ = slots_.size() - 1;
+        head_ = 0;
+    }
+    std::vector<T> slots_;
+    std::size_t head_ = 0;
+    std::size_t size_ = 0;
+    std::size_t mask_ = 0;
+};
 
 //! A dwell or I/O event that follows a segment (or the start, at rest).
 struct WindowEvent {
@@ -38,6 +77,7 @@ struct WindowRun {
     std::size_t count = 0;    //!< segments
     double length = 0;        //!< mm
     ProfileLimits limits;
+    ProfileLimits first_limits;  //!< its first segment's (times run_margin); limits never drift far below
     double junction_max = 0;  //!< mm/s at its end
     double bound = 0;         //!< mm/s, from the backward pass: the end speed it can still stop from
 };
@@ -57,19 +97,22 @@ public:
     //! The stream is over: the window end is a real stop, everything is final.
     void finish();
 
-    [[nodiscard]] std::deque<TrajectoryPiece>& output() { return output_; }
+    [[nodiscard]] RingQueue<TrajectoryPiece>& output() { return output_; }
 
 private:
     void plan(std::size_t keep_at_most);
     void commit_front(double v_end);
     [[nodiscard]] bool joins_last_run(const WindowSegment& segment) const;
+    //! S-curve only: whether the last run can take a segment whose limits are slightly below
+    //! its own by lowering its limits to the segment's (`lowered`) without lowering any bound.
+    [[nodiscard]] bool lowers_last_run(const WindowSegment& segment, ProfileLimits& lowered) const;
     void emit_event(const WindowEvent& event, const AxisVector& position);
 
     ProfileKind kind_;
     std::size_t window_;
-    std::deque<WindowSegment> segments_;
-    std::deque<WindowRun> runs_;
-    std::deque<TrajectoryPiece> output_;
+    RingQueue<WindowSegment> segments_;
+    RingQueue<WindowRun> runs_;
+    RingQueue<TrajectoryPiece> output_;
     double start_speed_ = 0;  //!< mm/s at the start of segments_.front() (final)
     double clock_s_ = 0;      //!< s, end of the last committed piece
     bool finished_ = false;

@@ -80,19 +80,107 @@ PathPoint point_at(const PathSegment& g, double s) {
     return out;
 }
 
+namespace {
+
+//! The range [lo, hi] of cos ψ over ψ in [psi0, psi1] (psi0 <= psi1): ±1 where the interval
+//! holds an extremum (a multiple of 2π, or π plus one), else the values at its ends.
+struct CosRange {
+    double lo = -1;
+    double hi = 1;
+};
+CosRange cos_range(double psi0, double psi1) {
+    if (!(psi1 - psi0 < two_pi)) return {};
+    const double c0 = std::cos(psi0);
+    const double c1 = std::cos(psi1);
+    CosRange r{std::min(c0, c1), std::max(c0, c1)};
+    if (std::floor(psi1 / two_pi) >= std::ceil(psi0 / two_pi)) r.hi = 1;
+    if (std::floor((psi1 - std::numbers::pi) / two_pi) >= std::ceil((psi0 - std::numbers::pi) / two_pi)) r.lo = -1;
+    return r;
+}
+
+// An arc's sweep is widened by this (rad) at both ends before its extrema are looked for, and
+// the bounds raised by this relative amount: a deciding comparison or an end value that
+// rounding gets wrong then still errs on the safe (larger) side.
+constexpr double angle_pad_rad = 1e-9;
+constexpr double bound_pad = 1e-12;
+
+//! Over θ in [0, sweep] (or [sweep, 0]): the range of A cos θ + B sin θ = R cos(θ − α).
+struct SinusoidRange {
+    double lo = 0;
+    double hi = 0;
+};
+//! The same for 0 < sweep < π, without trigonometry per sinusoid: given cos and sin of the
+//! sweep, the ends are A and A·cos + B·sin, and the crest (the direction (A, B)) lies in the
+//! swept angle when both cross products with its ends are >= 0 (trough: <= 0), tested with a
+//! tolerance that counts near misses as inside (the safe side).
+SinusoidRange sinusoid_range_short(double a, double b, double cos_sweep, double sin_sweep) {
+    const double amplitude = std::sqrt(a * a + b * b);
+    if (!(amplitude > 0)) return {};
+    const double end = a * cos_sweep + b * sin_sweep;
+    const double to_end = a * sin_sweep - b * cos_sweep;  // cross((A, B), (cos, sin))
+    const double slack = angle_pad_rad * amplitude;
+    const double pad = bound_pad * amplitude;
+    const bool crest = b >= -slack && to_end >= -slack;
+    const bool trough = b <= slack && to_end <= slack;
+    return {(trough ? -amplitude : std::min(a, end)) - pad, (crest ? amplitude : std::max(a, end)) + pad};
+}
+
+//! max |c + A cos θ + B sin θ| over the sweep.
+double max_abs_short(double c, double a, double b, double cos_sweep, double sin_sweep) {
+    const SinusoidRange r = sinusoid_range_short(a, b, cos_sweep, sin_sweep);
+    return std::max(std::abs(c + r.lo), std::abs(c + r.hi));
+}
+
+SinusoidRange sinusoid_range(double a, double b, double sweep) {
+    const double amplitude = std::hypot(a, b);
+    if (!(amplitude > 0)) return {};
+    const double alpha = std::atan2(b, a);
+    const double from = std::min(0.0, sweep) - alpha - angle_pad_rad;
+    const double to = std::max(0.0, sweep) - alpha + angle_pad_rad;
+    const CosRange c = cos_range(from, to);
+    const double pad = bound_pad * amplitude;
+    return {amplitude * c.lo - pad, amplitude * c.hi + pad};
+}
+
+//! max |c + A cos θ + B sin θ| over the sweep.
+double max_abs(double c, double a, double b, double sweep) {
+    const SinusoidRange r = sinusoid_range(a, b, sweep);
+    return std::max(std::abs(c + r.lo), std::abs(c + r.hi));
+}
+
+}  // namespace
+
 DerivativeBounds derivative_bounds(const PathSegment& g) {
     DerivativeBounds b;
     for (std::size_t i = 0; i < axis_count; ++i) b.d1[i] = std::abs(g.rate[i]);
     if (!(g.radius_mm > 0)) return b;  // a line: |p'| = 1 on the measured axes by construction
-    // r(cos θ u_i + sin θ v_i) peaks at r·sqrt(u_i² + v_i²) over θ; each derivative adds a factor k.
-    const double r1 = g.radius_mm * std::abs(g.angle_rate);
-    for (std::size_t i = 0; i < 3; ++i) {
-        const double w = std::hypot(g.u[i], g.v[i]);
-        b.d1[i] += r1 * w;
-        b.d2[i] = r1 * std::abs(g.angle_rate) * w;
-        b.d3[i] = b.d2[i] * std::abs(g.angle_rate);
+    // Over the arc's own sweep, not the whole circle: with θ = k·s in [0, k·length],
+    //   q'_i   = rate_i + r k (v_i cos θ − u_i sin θ),
+    //   q''_i  = −r k² (u_i cos θ + v_i sin θ),
+    //   q'''_i = −r k³ (v_i cos θ − u_i sin θ),
+    // each a sinusoid in θ whose extremes over an interval lie at its ends or at a crest inside
+    // (sinusoid_range). A blend of a few degrees thus bounds an axis by its real slope along the
+    // arc, not by the circle's full radius (which would cost up to half its acceleration).
+    const double k = g.angle_rate;
+    const double sweep = k * g.length;
+    const double r1 = g.radius_mm * k;
+    const double r2 = r1 * k;
+    const double r3 = r2 * k;
+    // Arcs under half a turn (every blend) take the fast path.
+    const bool short_arc = sweep > 0 && sweep < 3.0;
+    const double cos_sweep = short_arc ? std::cos(sweep) : 0.0;
+    const double sin_sweep = short_arc ? std::sin(sweep) : 0.0;
+    for (std::size_t i = 0; i < 3 && short_arc; ++i) {
+        b.d1[i] = max_abs_short(g.rate[i], r1 * g.v[i], -r1 * g.u[i], cos_sweep, sin_sweep);
+        b.d2[i] = max_abs_short(0.0, r2 * g.u[i], r2 * g.v[i], cos_sweep, sin_sweep);
+        b.d3[i] = max_abs_short(0.0, r3 * g.v[i], -r3 * g.u[i], cos_sweep, sin_sweep);
     }
-    // |p'_xyz|² = |rate|² + r1² + 2 r1 rate·(−sin θ u + cos θ v) ≤ |rate|² + r1² + 2 r1 |(rate·u, rate·v)|.
+    for (std::size_t i = 0; i < 3 && !short_arc; ++i) {
+        b.d1[i] = max_abs(g.rate[i], r1 * g.v[i], -r1 * g.u[i], sweep);
+        b.d2[i] = max_abs(0.0, r2 * g.u[i], r2 * g.v[i], sweep);
+        b.d3[i] = max_abs(0.0, r3 * g.v[i], -r3 * g.u[i], sweep);
+    }
+    // |p'_xyz|² = |rate|² + r1² + 2 r1 (rate·v cos θ − rate·u sin θ) (u ⟂ v, both unit).
     double rate2 = 0;
     double ru = 0;
     double rv = 0;
@@ -101,7 +189,9 @@ DerivativeBounds derivative_bounds(const PathSegment& g) {
         ru += g.rate[i] * g.u[i];
         rv += g.rate[i] * g.v[i];
     }
-    b.speed_factor = std::sqrt(rate2 + r1 * r1 + 2.0 * r1 * std::hypot(ru, rv));
+    const SinusoidRange cross = short_arc ? sinusoid_range_short(2.0 * r1 * rv, -2.0 * r1 * ru, cos_sweep, sin_sweep)
+                                          : sinusoid_range(2.0 * r1 * rv, -2.0 * r1 * ru, sweep);
+    b.speed_factor = std::sqrt(std::max(0.0, rate2 + r1 * r1 + cross.hi));
     return b;
 }
 

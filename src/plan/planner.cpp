@@ -96,7 +96,8 @@ struct Planner::Impl {
                 if (blend) {
                     p.path.length -= blend->trim_mm;
                     const ProfileLimits limits = plan_detail::segment_limits(
-                        blend->arc, machine, std::min(p.feed_mm_s, next.feed_mm_s), kind);
+                        blend->arc, machine, std::min(p.feed_mm_s, next.feed_mm_s), kind,
+                        kind == ProfileKind::trapezoid ? plan_detail::trapezoid_blend_normal_share : 0.5);
                     const SourceLocation where = p.where;
                     const std::int64_t number = p.sequence_number;
                     release_pending(p.limits.max_velocity);

@@ -6,18 +6,31 @@
 
 namespace nckit::plan_detail {
 
-//! For axis i with bounds d1, d2, d3 on |q'|, |q''|, |q'''| over the segment (derivative_bounds)
-//! the axis moves with q̇ = q'ṡ, q̈ = q''ṡ² + q's̈, q⃛ = q'''ṡ³ + 3q''ṡs̈ + q's⃛, so by the
-//! triangle inequality it stays within (vmax, amax, jmax) when
-//!   d1·v ≤ vmax;
-//!   curved (d2 > 0): d2·v² ≤ amax/2 and d1·a ≤ amax/2   (a straight axis: d1·a ≤ amax);
-//!   curved: d3·v³ ≤ jmax/3, 3·d2·v·a ≤ jmax/3, d1·j ≤ jmax/3 (straight: d1·j ≤ jmax),
-//! with v, a, j the path's speed, acceleration and jerk limits. The profile keeps |ṡ| ≤ v,
-//! |s̈| ≤ a and |s⃛| ≤ j at every instant, so each term stays within its share. Trapezoids have
-//! no jerk limit (their jerk is infinite at phase switches), so only v and a apply.
+//! The most of an axis's acceleration the curvature term d2·v² may take (the rest, at least a
+//! tenth, is left to the path acceleration, so a > 0 on every segment).
+inline constexpr double max_normal_share = 0.9;
+//! The normal share of a corner blend's arc in a trapezoid plan. A blend is short and sits
+//! where the path is slowest: its speed is what the corner costs, and the tangential share
+//! matters little (speed changes happen on the lines around it), so it gets most of amax
+//! (LinuxCNC gives its blends sqrt(1 - 0.5²) ≈ 0.87 of a in the normal direction). With jerk
+//! limits the fixed half stays (a small tangential share would slow the jerk phases on it).
+inline constexpr double trapezoid_blend_normal_share = 0.9;
+
+//! For axis i with bounds d1, d2, d3 on |q'|, |q''|, |q'''| over the segment (derivative_bounds,
+//! over the segment's own extent) the axis moves with q̇ = q'ṡ, q̈ = q''ṡ² + q's̈,
+//! q⃛ = q'''ṡ³ + 3q''ṡs̈ + q's⃛, so by the triangle inequality it stays within (vmax, amax, jmax)
+//! whenever the path's speed, acceleration and jerk limits v, a, j satisfy, for every axis,
+//!   d1·v <= vmax,   d2·v² + d1·a <= amax,   d3·v³ + 3·d2·v·a + d1·j <= jmax.
+//! The profile keeps |ṡ| <= v, |s̈| <= a and |s⃛| <= j at every instant. The budget is split per
+//! segment: v first (feed, axis speeds, d2·v² <= normal_share·amax, d3·v³ <= jmax/3), then a
+//! takes what d2·v² leaves (>= (1 − normal_share)·amax, all of amax on a straight axis), then j
+//! what the rest leaves, the coupling term taking at most half of it (so d1·j >= jmax/3).
+//! With the default normal_share of 1/2 every limit is thus at least what fixed shares (amax/2
+//! and jmax/3 for each term) give. normal_share is clamped into [0, max_normal_share].
+//! Trapezoids have no jerk limit (their jerk is infinite at phase switches): only v and a apply.
 //! feed_mm_s is the programmed speed (already overridden); +infinity for rapids. Axes the
 //! machine lacks must not move (unchecked here). Returns max_velocity 0 when nothing moves.
 [[nodiscard]] ProfileLimits segment_limits(const PathSegment& segment, const MachineConfig& machine,
-                                           double feed_mm_s, ProfileKind kind);
+                                           double feed_mm_s, ProfileKind kind, double normal_share = 0.5);
 
 }  // namespace nckit::plan_detail

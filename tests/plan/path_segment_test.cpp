@@ -5,6 +5,8 @@
 #include <numbers>
 
 #include "../../src/plan/junction.hpp"
+#include "../../src/plan/segment_limits.hpp"
+#include <random>
 #include "nckit/plan/path_segment.hpp"
 
 namespace nckit {
@@ -157,6 +159,164 @@ TEST(PathSegment, TangencyTolerance) {
     const PathSegment a = make_line(point(0, 0, 0), point(10, 0, 0));
     EXPECT_TRUE(plan_detail::tangent(a, make_line(point(10, 0, 0), point(20, 1e-6, 0))));
     EXPECT_FALSE(plan_detail::tangent(a, make_line(point(10, 0, 0), point(20, 1e-4, 0))));
+}
+
+//! Bounds over an arc's own sweep: valid everywhere on it, and tight (reached at a sampled point
+//! up to the sampling), for random partial arcs and helices in every orientation.
+TEST(PathSegment, ArcBoundsCoverTheSweepAndAreTight) {
+    std::mt19937_64 random(99);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int n = 0; n < 400; ++n) {
+        Arc arc;
+        arc.plane = static_cast<Plane>(n % 3);
+        arc.direction = n % 2 == 0 ? ArcDirection::clockwise : ArcDirection::counterclockwise;
+        const double r = std::pow(10.0, -2 + 3 * unit(random));
+        const double a0 = 2 * std::numbers::pi * unit(random);
+        // Sweeps from a thousandth of a degree to nearly a turn (and sometimes a turn and more).
+        const double sweep = n % 7 == 0 ? 2 * std::numbers::pi * (1 + unit(random))
+                                        : std::pow(10.0, -5 + 5.8 * unit(random));
+        const double a1 = a0 + (arc.direction == ArcDirection::counterclockwise ? sweep : -sweep);
+        const std::size_t f = arc.plane == Plane::xy ? 0 : arc.plane == Plane::zx ? 2 : 1;
+        const std::size_t s = arc.plane == Plane::xy ? 1 : arc.plane == Plane::zx ? 0 : 2;
+        arc.center = point(1, 2, 3);
+        arc.from = arc.center;
+        arc.from[f] += r * std::cos(a0);
+        arc.from[s] += r * std::sin(a0);
+        arc.to = arc.center;
+        arc.to[f] += r * std::cos(a1);
+        arc.to[s] += r * std::sin(a1);
+        arc.to[3 - f - s] += n % 3 == 0 ? unit(random) - 0.5 : 0.0;  // a helix now and then
+        arc.full_turns = sweep >= 2 * std::numbers::pi ? 1 : 0;
+        if (arc.full_turns == 1) arc.to = arc.from;
+        const PathSegment g = make_arc(arc);
+        const DerivativeBounds b = derivative_bounds(g);
+        AxisVector seen1, seen2, seen3;
+        double seen_speed = 0;
+        const int samples = 4000;
+        for (int k = 0; k <= samples; ++k) {
+            const PathPoint at = point_at(g, g.length * k / samples);
+            for (std::size_t i = 0; i < 3; ++i) {
+                ASSERT_LE(std::abs(at.d1[i]), b.d1[i] * (1 + 1e-12) + 1e-15) << n << " axis " << i;
+                ASSERT_LE(std::abs(at.d2[i]), b.d2[i] * (1 + 1e-12) + 1e-15) << n << " axis " << i;
+                ASSERT_LE(std::abs(at.d3[i]), b.d3[i] * (1 + 1e-12) + 1e-15) << n << " axis " << i;
+                seen1[i] = std::max(seen1[i], std::abs(at.d1[i]));
+                seen2[i] = std::max(seen2[i], std::abs(at.d2[i]));
+                seen3[i] = std::max(seen3[i], std::abs(at.d3[i]));
+            }
+            const double speed = std::hypot(at.d1[0], at.d1[1], at.d1[2]);
+            ASSERT_LE(speed, b.speed_factor * (1 + 1e-12)) << n;
+            seen_speed = std::max(seen_speed, speed);
+        }
+        // Tight: the sampling misses a crest by at most (step)²/2 of the amplitude.
+        const double step = std::abs(g.sweep_rad()) / samples;
+        const double slack = 0.5 * step * step + 1e-9;
+        for (std::size_t i = 0; i < 3; ++i) {
+            EXPECT_LE(b.d1[i], seen1[i] + slack * (1 + b.d1[i])) << n << " axis " << i;
+            EXPECT_LE(b.d2[i], seen2[i] + slack * (1 + b.d2[i])) << n << " axis " << i;
+            EXPECT_LE(b.d3[i], seen3[i] + slack * (1 + b.d3[i])) << n << " axis " << i;
+        }
+        EXPECT_LE(b.speed_factor, seen_speed + slack * (1 + b.speed_factor)) << n;
+    }
+}
+
+//! A blend between nearly collinear lines along X with a slight Z slope: its X bound is the
+//! lines' slope, not the circle's radius, so it keeps nearly the whole acceleration.
+TEST(PathSegment, GentleBlendKeepsNearlyTheWholeAcceleration) {
+    const PathSegment a = make_line(point(0, 0, 0), point(0.1, 0, 0.02));
+    const PathSegment b = make_line(point(0.1, 0, 0.02), point(0.2, 0, 0.0405));
+    auto blend = plan_detail::blend_lines(a, a.length, b, 0.01);
+    ASSERT_TRUE(blend);
+    const DerivativeBounds d = derivative_bounds(blend->arc);
+    EXPECT_NEAR(d.d1[0], std::max(std::abs(a.rate[0]), std::abs(b.rate[0])), 1e-9);
+    EXPECT_NEAR(d.d1[2], std::max(std::abs(a.rate[2]), std::abs(b.rate[2])), 1e-9);
+    MachineConfig m = default_mill();
+    for (AxisConfig& axis : m.axes) {
+        axis.max_velocity = 100;
+        axis.max_acceleration = 500;
+        axis.max_jerk = 50000;
+    }
+    for (ProfileKind kind : {ProfileKind::trapezoid, ProfileKind::scurve}) {
+        const ProfileLimits l = plan_detail::segment_limits(blend->arc, m, 50, kind);
+        const ProfileLimits line = plan_detail::segment_limits(a, m, 50, kind);
+        EXPECT_NEAR(l.max_velocity, 50, 1e-9);
+        // (500 − d2·50²)/d1: within a few percent of the line's 500/|rate_x|, not half of it.
+        EXPECT_GT(l.max_acceleration, 0.95 * line.max_acceleration) << static_cast<int>(kind);
+    }
+}
+
+//! segment_limits: for random arcs, helices and blends, every axis limit holds with the
+//! triangle-inequality budget (d2·v² + d1·a <= amax, d3·v³ + 3·d2·v·a + d1·j <= jmax), and no
+//! limit is below what fixed halves and thirds give.
+TEST(SegmentLimits, BudgetHoldsAndBeatsFixedShares) {
+    std::mt19937_64 random(5);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    MachineConfig m = default_mill();
+    for (int n = 0; n < 2000; ++n) {
+        Arc arc;
+        arc.plane = Plane::xy;
+        arc.direction = ArcDirection::counterclockwise;
+        const double r = std::pow(10.0, -2 + 3 * unit(random));
+        const double a0 = 2 * std::numbers::pi * unit(random);
+        const double sweep = std::pow(10.0, -4 + 4.7 * unit(random));
+        arc.center = point(0, 0, 0);
+        arc.from = point(r * std::cos(a0), r * std::sin(a0), 0);
+        arc.to = point(r * std::cos(a0 + sweep), r * std::sin(a0 + sweep), n % 2 == 0 ? unit(random) : 0.0);
+        const PathSegment g = make_arc(arc);
+        const DerivativeBounds b = derivative_bounds(g);
+        const double feed = std::pow(10.0, 0.5 + 2.5 * unit(random));
+        for (ProfileKind kind : {ProfileKind::trapezoid, ProfileKind::scurve}) {
+            for (double share : {0.5, plan_detail::trapezoid_blend_normal_share}) {
+                const ProfileLimits l = plan_detail::segment_limits(g, m, feed, kind, share);
+                ASSERT_GT(l.max_velocity, 0);
+                ASSERT_GT(l.max_acceleration, 0);
+                EXPECT_LE(l.max_velocity * b.speed_factor, feed * (1 + 1e-12));
+                const double v = l.max_velocity;
+                const double a = l.max_acceleration;
+                for (const AxisConfig& axis : m.axes) {
+                    const std::size_t i = index(axis.axis);
+                    EXPECT_LE(b.d1[i] * v, axis.max_velocity * (1 + 1e-12));
+                    EXPECT_LE(b.d2[i] * v * v + b.d1[i] * a, axis.max_acceleration * (1 + 1e-12)) << n;
+                    if (kind == ProfileKind::scurve) {
+                        const double j = l.max_jerk;
+                        ASSERT_GT(j, 0);
+                        EXPECT_LE(b.d3[i] * v * v * v + 3 * b.d2[i] * v * a + b.d1[i] * j,
+                                  axis.max_jerk * (1 + 1e-12)) << n;
+                    }
+                }
+                if (share != 0.5) continue;
+                // Fixed shares: v from d2·v² <= amax/2 (and d3·v³ <= jmax/3), a <= amax/(2·d1),
+                // the coupling 3·d2·v·a <= jmax/3, j <= jmax/(3·d1).
+                double v_fixed = feed / b.speed_factor;
+                double a_fixed = 1e300;
+                double j_fixed = 1e300;
+                for (const AxisConfig& axis : m.axes) {
+                    const std::size_t i = index(axis.axis);
+                    if (b.d1[i] > 0) v_fixed = std::min(v_fixed, axis.max_velocity / b.d1[i]);
+                    if (b.d2[i] > 0) {
+                        v_fixed = std::min(v_fixed, std::sqrt(0.5 * axis.max_acceleration / b.d2[i]));
+                        if (kind == ProfileKind::scurve) {
+                            v_fixed = std::min(v_fixed, std::cbrt(axis.max_jerk / (3 * b.d3[i])));
+                        }
+                    }
+                }
+                for (const AxisConfig& axis : m.axes) {
+                    const std::size_t i = index(axis.axis);
+                    if (b.d1[i] > 0) {
+                        a_fixed = std::min(a_fixed, (b.d2[i] > 0 ? 0.5 : 1.0) * axis.max_acceleration / b.d1[i]);
+                        j_fixed = std::min(j_fixed, (b.d2[i] > 0 ? 1.0 / 3 : 1.0) * axis.max_jerk / b.d1[i]);
+                    }
+                    if (kind == ProfileKind::scurve && b.d2[i] > 0) {
+                        a_fixed = std::min(a_fixed, axis.max_jerk / (9 * b.d2[i] * v_fixed));
+                    }
+                }
+                EXPECT_GE(v, v_fixed * (1 - 1e-12)) << n;
+                EXPECT_GE(a, a_fixed * (1 - 1e-12)) << n;
+                if (kind == ProfileKind::scurve) {
+                    EXPECT_GE(l.max_jerk, j_fixed * (1 - 1e-12)) << n;
+                }
+            }
+        }
+    }
 }
 
 }  // namespace

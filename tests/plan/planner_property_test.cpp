@@ -149,5 +149,75 @@ TEST(PlannerProperty, ShortSegmentChainsReachTheFeed) {
     }
 }
 
+//! A CAM finishing raster like bench/planner_programs/surface_50k.ngc: rows of 0.1 mm lines
+//! over a bump with Z rounded to 4 decimals (turning angles of 0 to a few mrad, some exactly
+//! collinear), 0.2 mm step-overs, G64 P0.01. Both kinds, a large and a small window: every
+//! limit and the tolerance hold, and the rows run at the feed with nearly the full
+//! acceleration (blends between near-collinear lines are budgeted from their real curvature,
+//! S-curve runs survive the slightly different limits of successive blends).
+TEST(PlannerProperty, CamRasterKeepsLimitsAndSpeed) {
+    auto z_at = [](double x, double y) {
+        const double r2 = (x - 10) * (x - 10) + (y - 0.5) * (y - 0.5);
+        return std::round((-2.0 + 3.0 * std::exp(-r2 / (2 * 8.0 * 8.0))) * 1e4) / 1e4;
+    };
+    MoveBuilder b;
+    const int rows = 4;
+    const int cols = 200;
+    b.position = xyz(0, 0, z_at(0, 0));
+    const PathControl g64{false, 0.01};
+    for (int row = 0; row < rows; ++row) {
+        const double y = 0.2 * row;
+        if (row > 0) b.line(xyz(b.position[0], y, z_at(b.position[0], y)), 3000, g64);
+        for (int k = 1; k <= cols; ++k) {
+            const int i = row % 2 == 0 ? k : cols - k;
+            const double x = 0.1 * i;
+            b.line(xyz(x, y, z_at(x, y)), 3000, g64);
+        }
+    }
+    for (ProfileKind kind : {ProfileKind::trapezoid, ProfileKind::scurve}) {
+        for (std::size_t window : {std::size_t{10000}, std::size_t{16}}) {
+            MachineConfig m = plan_test::test_machine(kind);
+            for (AxisConfig& axis : m.axes) {
+                if (axis.axis == Axis::A) continue;
+                axis.max_velocity = 100;
+                axis.max_acceleration = 500;
+                axis.max_jerk = 50000;
+            }
+            PlannerOptions o;
+            o.window_moves = window;
+            const PlanResult r = plan_moves(b.moves, m, o);
+            ASSERT_TRUE(r.diagnostics.empty());
+            auto feed_of = [&](const TrajectoryPiece& p) {
+                return b.feeds_mm_s[static_cast<std::size_t>(p.sequence_number)];
+            };
+            const plan_test::CheckStats stats = plan_test::check_trajectory(r.trajectory.pieces, m, kind, b.position, feed_of, 8);
+            ASSERT_FALSE(::testing::Test::HasFailure()) << static_cast<int>(kind) << " window " << window;
+            for (const TrajectoryPiece& p : r.trajectory.pieces) {
+                if (!p.blend) continue;
+                const AxisVector c = std::get<Line>(b.moves[static_cast<std::size_t>(p.sequence_number)].what).to;
+                const AxisVector mid = position_at(p.segment, 0.5 * p.segment.length);
+                ASSERT_LE(std::hypot(mid[0] - c[0], mid[1] - c[1], mid[2] - c[2]), 0.01 * (1 + 1e-9) + 1e-12);
+            }
+            // A 16-segment window (1.6 mm) is too short to brake from the feed: only the
+            // limits are checked there.
+            if (window < 1000) continue;
+            EXPECT_GT(stats.max_xyz_speed, 50 * (1 - 1e-6));
+            // Each row (20 mm and a bit of Z) from rest to rest at ~500 mm/s², with 5 % slack
+            // on the speed changes: length/feed + v/a (trapezoid), + a/j more with jerk limits.
+            double length = 0;
+            for (const Move& move : b.moves) {
+                const auto& l = std::get<Line>(move.what);
+                length += std::hypot(l.to[0] - l.from[0], l.to[1] - l.from[1], l.to[2] - l.from[2]);
+            }
+            const double stops = 2 * rows;  // rows end in 90° step-over corners: nearly stops
+            const double change = kind == ProfileKind::trapezoid ? 50.0 / 500 : 50.0 / 500 + 500.0 / 50000;
+            // Per row, the two step-over corners' blends (r = 0.024 mm) add a little more.
+            const double corners = kind == ProfileKind::trapezoid ? 0.02 : 0.06;
+            EXPECT_LT(r.trajectory.duration_s(), length / 50 + stops * 0.5 * change * 1.05 + corners * rows)
+                << static_cast<int>(kind);
+        }
+    }
+}
+
 }  // namespace
 }  // namespace nckit
