@@ -50,7 +50,7 @@ machine_file() {  # machine_file VMAX AMAX -> path of an nckit machine file with
       printf '[machine]\nname = "planner-bench"\nservo_period_s = 0.001\n\n'
       for ax in X Y Z; do
         printf '[[axis]]\nname = "%s"\nkind = "linear"\nmax_velocity = %s\nmax_acceleration = %s\n' "$ax" "$1" "$2"
-        printf 'max_jerk = %s\nmin = -1000.0\nmax = 1000.0\n\n' "$jerk"
+        printf 'max_jerk = %s\nmin = -1000.0\nmax = 1000.0\nsteps_per_unit = 1000.0\n\n' "$jerk"
       done
     } > "$f"
   fi
