@@ -47,25 +47,9 @@ LC_ALL=C awk -v rows=$rows -v cols=$cols 'BEGIN {
 }' > "$program"
 blocks=$(grep -c '^G1 ' "$program")
 
-# best_of CMD...: runs CMD $runs times in $work (rs274 rewrites its parameter file there), output
-# to /dev/null; prints "best_seconds best_peak_kb".
-best_of() {
-  local best_s="" best_kb="" s kb i
-  for ((i = 0; i < runs; i++)); do
-    if ! (cd "$work" &&
-          /usr/bin/time -f "%e %M" -o "$work/time.txt" "$@" >/dev/null 2>"$work/stderr.txt"); then
-      echo "throughput_vs_linuxcnc: '$*' failed:" >&2
-      grep -v '^executing$' "$work/stderr.txt" | head -5 >&2
-      exit 1
-    fi
-    read -r s kb < <(tail -n 1 "$work/time.txt")
-    if [[ -z $best_s ]] || awk -v a="$s" -v b="$best_s" 'BEGIN { exit !(a < b) }'; then
-      best_s=$s
-    fi
-    if [[ -z $best_kb ]] || ((kb < best_kb)); then best_kb=$kb; fi
-  done
-  echo "$best_s $best_kb"
-}
+script_name=throughput_vs_linuxcnc
+# shellcheck source=bench/best_of.sh
+source "$repo/bench/best_of.sh"
 
 # Untimed sanity check: both must really turn every block into a motion.
 rs_moves=$(cd "$work" && "$rs274" -g "$program" 2>/dev/null | grep -c 'STRAIGHT_FEED(') || true
