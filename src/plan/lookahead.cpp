@@ -77,9 +77,14 @@ bool Lookahead::lowers_last_run(const WindowSegment& segment, ProfileLimits& low
     // max_end_speed(length, 0) of its limits then (see plan()). If the longer run with the
     // lower limits can still brake from that speed, no bound upstream can fall below what it
     // was, so every speed already committed stays reachable and stoppable.
-    const double before = max_end_speed(run.length, 0.0, run.limits, kind_);
+    const double before = stop_speed(run);
     const double after = max_end_speed(run.length + segment.path.length, 0.0, lowered, kind_);
     return after >= before;
+}
+
+double Lookahead::stop_speed(const WindowRun& run) const {
+    if (run.stop_speed < 0 || full_passes_) run.stop_speed = max_end_speed(run.length, 0.0, run.limits, kind_);
+    return run.stop_speed;
 }
 
 void Lookahead::add(WindowSegment segment) {
@@ -88,6 +93,7 @@ void Lookahead::add(WindowSegment segment) {
         WindowSegment& last = segments_.back();
         last.junction_max = std::min(last.junction_max, segment.limits.max_velocity * run_margin);
         runs_.back().junction_max = std::min(last.junction_max, runs_.back().limits.max_velocity);
+        touch(runs_.size() - 1);
     }
     ProfileLimits lowered;
     const bool joins = joins_last_run(segment);
@@ -97,6 +103,8 @@ void Lookahead::add(WindowSegment segment) {
         ++run.count;
         run.length += segment.path.length;
         run.junction_max = std::min(segment.junction_max, run.limits.max_velocity);
+        run.stop_speed = -1;
+        touch(runs_.size() - 1);
     } else {
         WindowRun run;
         run.count = 1;
@@ -106,6 +114,7 @@ void Lookahead::add(WindowSegment segment) {
         run.first_limits = run.limits;
         run.junction_max = std::min(segment.junction_max, run.limits.max_velocity);
         runs_.push_back(run);
+        touch(runs_.size() - 1);
     }
     segments_.push_back(std::move(segment));
     ++added_since_plan_;
@@ -136,15 +145,23 @@ void Lookahead::plan(std::size_t keep_at_most) {
     added_since_plan_ = 0;
     const std::size_t n = runs_.size();
     if (n == 0) return;
+    if (full_passes_) dirty_from_ = 0;
     // Backward: the end of the window is a stop until more segments arrive; bound[k] is the
     // highest end speed of run k from which every later junction limit can still be kept.
+    // bound[k] is a function of run k's junction_max and run k + 1's length, limits and bound:
+    // before dirty_from_, where the runs are as the last pass left them, the pass can stop at
+    // the first bound that comes out as it was (all earlier ones would too).
+    bool next_changed = runs_[n - 1].bound != 0 || n - 1 >= dirty_from_;
     runs_[n - 1].bound = 0;
     for (std::size_t k = n - 1; k-- > 0;) {
+        if (!next_changed && k + 1 < dirty_from_) break;
         const WindowRun& next = runs_[k + 1];
         WindowRun& here = runs_[k];
+        const double old_bound = here.bound;
         // max_end_speed(d, v) >= v: once the next bound reaches this junction's limit, no call.
         if (next.bound >= here.junction_max) {
             here.bound = here.junction_max;
+            next_changed = here.bound != old_bound;
             continue;
         }
         // The highest speed from which the next run can brake to its bound *or stop*. With jerk
@@ -153,12 +170,15 @@ void Lookahead::plan(std::size_t keep_at_most) {
         // of the two makes the bound grow with w, so bounds only rise as the window grows and a
         // committed speed stays stoppable. From any start at or below it, plan_profile's end
         // speed is never above the one asked for (it picks the highest reachable below).
-        double brake_from = max_end_speed(next.length, next.bound, next.limits, kind_);
+        double brake_from = next.bound > 0 ? max_end_speed(next.length, next.bound, next.limits, kind_)
+                                           : stop_speed(next);
         if (kind_ == ProfileKind::scurve && next.bound > 0) {
-            brake_from = std::max(brake_from, max_end_speed(next.length, 0.0, next.limits, kind_));
+            brake_from = std::max(brake_from, stop_speed(next));
         }
         here.bound = std::min(here.junction_max, brake_from);
+        next_changed = here.bound != old_bound;
     }
+    dirty_from_ = n;
     // Forward: commit runs while their end speed is final, i.e. no later segment could raise it
     // (it is held by its junction limit or by how fast it can speed up, not by the window's
     // stop); when the window is too full, commit as planned anyway.
@@ -178,11 +198,13 @@ void Lookahead::plan(std::size_t keep_at_most) {
         commit_front(v_end);
     }
     left_after_plan_ = segments_.size();
+    dirty_from_ = runs_.size();
 }
 
 void Lookahead::commit_front(double v_end) {
     const WindowRun run = runs_.front();
     runs_.pop_front();
+    if (dirty_from_ > 0) --dirty_from_;
     const Profile profile = plan_profile(run.length, start_speed_, v_end, run.limits, kind_);
     const double total_s = profile.duration_s();
     start_speed_ = profile.end_velocity;

@@ -80,6 +80,9 @@ struct WindowRun {
     ProfileLimits first_limits;  //!< its first segment's (times run_margin); limits never drift far below
     double junction_max = 0;  //!< mm/s at its end
     double bound = 0;         //!< mm/s, from the backward pass: the end speed it can still stop from
+    //! mm/s, max_end_speed(length, 0, limits) once computed, < 0 until then; reset whenever
+    //! length or limits change.
+    mutable double stop_speed = -1;
 };
 
 //! Runs merge segments whose speed, acceleration and jerk limits are within this factor.
@@ -99,6 +102,10 @@ public:
 
     [[nodiscard]] RingQueue<TrajectoryPiece>& output() { return output_; }
 
+    //! Tests only: every backward pass recomputes every bound, and no stop speed is taken from
+    //! the cache, as a reference for the incremental passes (whose results must be identical).
+    void set_full_passes(bool full) { full_passes_ = full; }
+
 private:
     void plan(std::size_t keep_at_most);
     void commit_front(double v_end);
@@ -107,6 +114,11 @@ private:
     //! its own by lowering its limits to the segment's (`lowered`) without lowering any bound.
     [[nodiscard]] bool lowers_last_run(const WindowSegment& segment, ProfileLimits& lowered) const;
     void emit_event(const WindowEvent& event, const AxisVector& position);
+    //! max_end_speed(run.length, 0, run.limits), cached in the run.
+    [[nodiscard]] double stop_speed(const WindowRun& run) const;
+    //! Run k (from the front) or a later one changed (length, limits or junction_max) since
+    //! the last backward pass.
+    void touch(std::size_t k) { dirty_from_ = std::min(dirty_from_, k); }
 
     ProfileKind kind_;
     std::size_t window_;
@@ -118,6 +130,10 @@ private:
     bool finished_ = false;
     std::size_t added_since_plan_ = 0;
     std::size_t left_after_plan_ = 0;
+    //! Runs before this index (from the front) kept their length, limits and junction_max since
+    //! the last backward pass: a bound there changes only when the next run's bound does.
+    std::size_t dirty_from_ = 0;
+    bool full_passes_ = false;
 };
 
 }  // namespace nckit::plan_detail

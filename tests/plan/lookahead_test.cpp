@@ -1,0 +1,92 @@
+// The look-ahead window's incremental backward pass (which stops at the first bound that comes
+// out unchanged, before the runs changed since the last pass) and its cached stop speeds give
+// exactly the pieces of full passes that recompute everything.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "../../src/plan/lookahead.hpp"
+#include "nckit/plan/path_segment.hpp"
+
+namespace nckit {
+namespace {
+
+using plan_detail::Lookahead;
+using plan_detail::WindowEvent;
+using plan_detail::WindowSegment;
+
+std::vector<TrajectoryPiece> run_window(ProfileKind kind, std::size_t window, unsigned seed, bool full) {
+    Lookahead lookahead(kind, window);
+    lookahead.set_full_passes(full);
+    std::mt19937_64 random(seed);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    // A few limit sets, each also slightly perturbed, so runs join, lower and break.
+    const ProfileLimits sets[] = {{50, 1000, 50000}, {20, 400, 20000}, {80, 2000, 1e5}, {5, 300, 8000}};
+    std::vector<TrajectoryPiece> out;
+    AxisVector at;
+    for (int i = 0; i < 6000; ++i) {
+        AxisVector to = at;
+        const double length = unit(random) < 0.02 ? 5.0 * unit(random) + 0.5 : 0.001 + 0.1 * unit(random);
+        to[Axis::X] += length;
+        WindowSegment s;
+        s.path = make_line(at, to);
+        ProfileLimits l = sets[(i / 40 + (unit(random) < 0.1 ? 1 : 0)) % 4];
+        const double wiggle = 1.0 + 0.06 * (unit(random) - 0.3);
+        l = {l.max_velocity * wiggle, l.max_acceleration * wiggle, l.max_jerk * wiggle};
+        s.limits = l;
+        const double u = unit(random);
+        s.junction_max = u < 0.01 ? 0.0 : u < 0.2 ? l.max_velocity * unit(random) : l.max_velocity;
+        s.sequence_number = i;
+        lookahead.add(std::move(s));
+        if (unit(random) < 0.003) {
+            WindowEvent e;
+            e.kind = PieceKind::dwell;
+            e.dwell_s = 0.01;
+            lookahead.add_event(e, to);
+        }
+        at = to;
+        auto& queue = lookahead.output();
+        while (!queue.empty()) {
+            out.push_back(queue.front());
+            queue.pop_front();
+        }
+    }
+    lookahead.finish();
+    auto& queue = lookahead.output();
+    while (!queue.empty()) {
+        out.push_back(queue.front());
+        queue.pop_front();
+    }
+    return out;
+}
+
+TEST(Lookahead, IncrementalPassesMatchFullPasses) {
+    for (ProfileKind kind : {ProfileKind::scurve, ProfileKind::trapezoid}) {
+        for (std::size_t window : {std::size_t{2}, std::size_t{7}, std::size_t{100}, std::size_t{10000}}) {
+            for (unsigned seed : {1U, 2U}) {
+                const auto fast = run_window(kind, window, seed, false);
+                const auto reference = run_window(kind, window, seed, true);
+                ASSERT_EQ(fast.size(), reference.size());
+                for (std::size_t i = 0; i < fast.size(); ++i) {
+                    const TrajectoryPiece& a = fast[i];
+                    const TrajectoryPiece& b = reference[i];
+                    ASSERT_EQ(a.kind, b.kind) << i;
+                    ASSERT_EQ(a.start_time_s, b.start_time_s) << i;
+                    ASSERT_EQ(a.duration_s, b.duration_s) << i;
+                    ASSERT_EQ(a.profile_offset_s, b.profile_offset_s) << i;
+                    ASSERT_EQ(a.profile_offset_mm, b.profile_offset_mm) << i;
+                    ASSERT_EQ(a.profile.start_velocity, b.profile.start_velocity) << i;
+                    ASSERT_EQ(a.profile.end_velocity, b.profile.end_velocity) << i;
+                    ASSERT_EQ(a.profile.distance, b.profile.distance) << i;
+                    ASSERT_EQ(a.profile.phase_count, b.profile.phase_count) << i;
+                    ASSERT_EQ(a.sequence_number, b.sequence_number) << i;
+                }
+            }
+        }
+    }
+}
+
+}  // namespace
+}  // namespace nckit
