@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
     nckit::cli::add_check_verb(app, exit_status);
     nckit::cli::add_expand_verb(app, exit_status);
     nckit::cli::add_plan_verb(app, exit_status);
+    nckit::cli::add_steps_verb(app, exit_status);
     nckit::cli::add_notch_verb(app, exit_status);
     try {
         app.parse(argc, argv);

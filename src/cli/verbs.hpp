@@ -8,6 +8,7 @@ void add_moves_verb(CLI::App& app, int& exit_status);
 void add_check_verb(CLI::App& app, int& exit_status);
 void add_expand_verb(CLI::App& app, int& exit_status);
 void add_plan_verb(CLI::App& app, int& exit_status);
+void add_steps_verb(CLI::App& app, int& exit_status);
 void add_notch_verb(CLI::App& app, int& exit_status);
 
 }  // namespace nckit::cli

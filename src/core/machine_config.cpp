@@ -103,6 +103,7 @@ void read_limits(TableReader& reader, AxisConfig& axis) {
     read_into(reader, "max_jerk", Need::required, Sign::positive, axis.max_jerk);
     read_into(reader, "steps_per_unit", Need::required, Sign::positive, axis.steps_per_unit);
     read_into(reader, "backlash", Need::optional, Sign::non_negative, axis.backlash);
+    read_into(reader, "backlash_rate_steps_s", Need::optional, Sign::positive, axis.backlash_rate_steps_s);
 }
 
 void read_travel(TableReader& reader, AxisConfig& axis, ConfigSink& sink) {
@@ -145,6 +146,12 @@ AxisEntry read_axis(const toml::table& table, ConfigSink& sink) {
     }
     read_limits(reader, entry.config);
     read_travel(reader, entry.config, sink);
+    static_assert(phase_table_names.size() == 5, "the phase_table choices below follow the names");
+    if (auto i = reader.choice("phase_table", Need::optional, "phase_table",
+                               {phase_table_names[0], phase_table_names[1], phase_table_names[2],
+                                phase_table_names[3], phase_table_names[4]})) {
+        entry.config.phase_table = static_cast<PhaseTableKind>(*i);
+    }
     reader.reject_unknown_keys();
     entry.valid = sink.diagnostics.size() == errors_before;
     return entry;

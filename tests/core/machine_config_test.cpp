@@ -1,3 +1,4 @@
+#include <array>
 #include <string>
 #include <string_view>
 
@@ -125,12 +126,13 @@ TEST(MachineConfig, ReadsTheOptionalKeys) {
     std::string config(valid_config);
     config.replace(config.find("servo_period_s"), 0,
                    "decimal_point_input = \"least_increment\"\nprofile = \"trapezoid\"\n");
-    config.replace(config.find("backlash = 0.0"), 14, "backlash = 0.02\nhome = 250");
+    config.replace(config.find("backlash = 0.0"), 14, "backlash = 0.02\nbacklash_rate_steps_s = 5000\nhome = 250");
     Result<MachineConfig> result = parse_machine_config(config, "m.toml");
     ASSERT_TRUE(result.ok()) << format_diagnostic(result.diagnostics().front());
     EXPECT_EQ(result->decimal_point_input, DecimalPointInput::least_increment);
     EXPECT_EQ(result->profile, ProfileKind::trapezoid);
     EXPECT_DOUBLE_EQ(result->axes[0].backlash, 0.02);
+    EXPECT_DOUBLE_EQ(result->axes[0].backlash_rate_steps_s, 5000.0);
     EXPECT_DOUBLE_EQ(result->axes[0].home, 250.0);
 }
 
@@ -176,6 +178,7 @@ TEST(MachineConfig, DefaultsOmittedOptionalKeys) {
     Result<MachineConfig> no_backlash = parse_machine_config(without("backlash"), "m.toml");
     ASSERT_TRUE(no_backlash.ok());
     EXPECT_DOUBLE_EQ(no_backlash->axes[0].backlash, 0.0);
+    EXPECT_DOUBLE_EQ(no_backlash->axes[0].backlash_rate_steps_s, 20000.0);
 }
 
 // ---- one test per error kind: exact line, column and message ----
@@ -235,6 +238,8 @@ INSTANTIATE_TEST_SUITE_P(
 TEST(MachineConfigError, NegativeBacklash) {
     EXPECT_EQ(only_error(with("backlash", "-0.01")),
               "14:12: 'backlash' must be zero or more, not -0.01");
+    EXPECT_EQ(only_error(with("backlash", "0.0\nbacklash_rate_steps_s = 0")),
+              "15:25: 'backlash_rate_steps_s' must be positive, not 0");
 }
 
 TEST(MachineConfigError, NonFiniteNumber) {
@@ -276,6 +281,37 @@ TEST(MachineConfigError, UnknownChoices) {
               "4:11: profile 'bang-bang' is not one of scurve trapezoid");
     EXPECT_EQ(only_error(with("servo_period_s", "0.001\ndecimal_point_input = \"fanuc\"")),
               "4:23: decimal_point_input 'fanuc' is not one of calculator least_increment");
+}
+
+TEST(MachineConfig, PhaseTableDefaultsToNone) {
+    Result<MachineConfig> result = parse_machine_config(valid_config, "m.toml");
+    ASSERT_TRUE(result.ok());
+    EXPECT_EQ(result->axes[0].phase_table, PhaseTableKind::none);
+    for (const AxisConfig& axis : default_mill().axes) {
+        EXPECT_EQ(axis.phase_table, PhaseTableKind::none);
+    }
+}
+
+TEST(MachineConfig, ReadsEveryPhaseTableName) {
+    const std::array expected{PhaseTableKind::none, PhaseTableKind::three_phase_six_beat,
+                              PhaseTableKind::three_phase_three_beat,
+                              PhaseTableKind::two_phase_full_step,
+                              PhaseTableKind::two_phase_half_step};
+    static_assert(expected.size() == phase_table_names.size());
+    for (std::size_t i = 0; i < expected.size(); ++i) {
+        const std::string value = "0.0\nphase_table = \"" + std::string(phase_table_names[i]) + "\"";
+        Result<MachineConfig> result = parse_machine_config(with("backlash", value), "m.toml");
+        ASSERT_TRUE(result.ok()) << phase_table_names[i];
+        EXPECT_EQ(result->axes[0].phase_table, expected[i]) << phase_table_names[i];
+    }
+}
+
+TEST(MachineConfigError, PhaseTableMustBeAKnownName) {
+    EXPECT_EQ(only_error(with("backlash", "0.0\nphase_table = \"3phase-12beat\"")),
+              "15:15: phase_table '3phase-12beat' is not one of none 3phase-6beat 3phase-3beat "
+              "2phase-full 2phase-half");
+    EXPECT_EQ(only_error(with("backlash", "0.0\nphase_table = 6")),
+              "15:15: 'phase_table' must be a string, not an integer");
 }
 
 TEST(MachineConfigError, AtLeastOneAxis) {

@@ -1,4 +1,5 @@
 #pragma once
+#include <array>
 #include <filesystem>
 #include <string>
 #include <string_view>
@@ -19,6 +20,20 @@ enum class DecimalPointInput {
 
 enum class ProfileKind { scurve, trapezoid };
 
+//! The winding sequence a stepper drive writes to its port (reference/steppers.md); `none` for
+//! a step/direction driver, which sequences the windings itself.
+enum class PhaseTableKind {
+    none,
+    three_phase_six_beat,    //!< A, AB, B, BC, C, CA (the seed's half-step table)
+    three_phase_three_beat,  //!< A, B, C
+    two_phase_full_step,     //!< AB, BC, CD, DA
+    two_phase_half_step      //!< A, AB, B, BC, C, CD, D, DA
+};
+
+//! The config spelling of each PhaseTableKind, indexed by the enum's value.
+inline constexpr std::array<std::string_view, 5> phase_table_names{
+    "none", "3phase-6beat", "3phase-3beat", "2phase-full", "2phase-half"};
+
 struct AxisConfig {
     Axis axis = Axis::X;
     AxisKind kind = AxisKind::linear;
@@ -29,7 +44,9 @@ struct AxisConfig {
     double max = 0;               //!< travel limit, machine coordinates, mm (deg)
     double steps_per_unit = 0;    //!< motor steps per mm (deg)
     double backlash = 0;          //!< mm (deg) lost on each reversal
+    double backlash_rate_steps_s = 20000;  //!< steps/s at which a reversal's backlash is taken up
     double home = 0;              //!< reference point G28 returns to, machine coordinates
+    PhaseTableKind phase_table = PhaseTableKind::none;  //!< windings sequenced by the drive
 };
 
 struct SpindleConfig {

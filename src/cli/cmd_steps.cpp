@@ -1,0 +1,215 @@
+// nckit steps FILE: interpret, plan and turn the trajectory into exact step/direction events.
+//
+// Binary output (default): one 10-byte record per step, little-endian, no header:
+//   bytes 0-7  int64  time, ns from the trajectory start
+//   byte  8    uint8  axis index, in the machine file's axis order
+//   byte  9    int8   direction, +1 or -1
+// --text: one step a line, "t_ns axis dir".
+// --compress US: text commands for step-compressing firmware, per axis in time order:
+//   "set_next_step_dir AXIS DIR" before each change of direction, and
+//   "queue_step AXIS INTERVAL_NS COUNT ADD_NS" (Klipper's queue_step, in ns), every step within
+//   US microseconds of its exact time; the compression ratio (steps / runs) goes to stderr.
+// A bad program writes nothing: the output goes to OUT.partial and is renamed at the end (to
+// stdout, when no -o is given, only after the whole program has been generated).
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "common.hpp"
+#include "nckit/drive/step_compress.hpp"
+#include "nckit/drive/step_generator.hpp"
+#include "nckit/plan/planner.hpp"
+#include "verbs.hpp"
+
+namespace nckit::cli {
+
+namespace {
+
+struct StepsOptions {
+    std::string program;
+    MachineOptions machine;
+    std::string output;
+    bool text = false;
+    std::string compress_text;  // --compress's value, empty for the default
+    double compress_us = -1;    // < 0: no compression
+};
+
+// Bytes for OUT.partial (flushed as they grow) or for stdout (held to the end).
+class Output {
+public:
+    explicit Output(std::FILE* file) : file_(file) {}
+    std::string& buffer() { return buffer_; }
+    void maybe_flush() {
+        if (file_ != nullptr && buffer_.size() > (1 << 16)) flush();
+    }
+    void flush() {
+        if (file_ != nullptr) std::fwrite(buffer_.data(), 1, buffer_.size(), file_);
+        buffer_.clear();
+    }
+
+private:
+    std::FILE* file_;
+    std::string buffer_;
+};
+
+void append_record(std::string& out, const StepEvent& e) {
+    auto t = static_cast<std::uint64_t>(e.t_ns);
+    char bytes[10];
+    for (int i = 0; i < 8; ++i) bytes[i] = static_cast<char>((t >> (8 * i)) & 0xFF);
+    bytes[8] = static_cast<char>(e.axis);
+    bytes[9] = static_cast<char>(e.direction);
+    out.append(bytes, sizeof bytes);
+}
+
+// Per axis: the steps of the current direction, compressed when it changes or at the end.
+struct AxisCompressor {
+    int direction = 0;
+    std::int64_t t_prev_ns = 0;
+    std::vector<std::int64_t> times;
+};
+
+void flush_axis(std::size_t axis, AxisCompressor& c, std::int64_t max_error_ns, std::string& out,
+                std::int64_t& runs) {
+    if (c.times.empty()) return;
+    for (const StepRun& run : compress_steps(c.times, c.t_prev_ns, max_error_ns)) {
+        out += fmt::format("queue_step {} {} {} {}\n", axis, run.interval_ns, run.count, run.add_ns);
+        ++runs;
+    }
+    c.times.clear();
+}
+
+int run_steps(const StepsOptions& options) {
+    auto interpreter = open_program_or_report(options.program, options.machine, false);
+    if (!interpreter) return exit_bad_input;
+    const MachineConfig& machine = interpreter->machine();
+    Planner planner(machine);
+    StepGenerator steps(machine);
+
+    std::FILE* file = nullptr;
+    std::filesystem::path partial;
+    if (!options.output.empty()) {
+        partial = options.output + ".partial";
+        file = std::fopen(partial.c_str(), "wb");
+        if (file == nullptr) {
+            fmt::print(stderr, "{}:0:0: error: cannot write the steps\n", options.output);
+            return exit_bad_input;
+        }
+    }
+    auto abandon = [&] {
+        if (file != nullptr) {
+            std::fclose(file);
+            std::filesystem::remove(partial);
+        }
+        return exit_bad_input;
+    };
+    Output out(file);
+    const bool compress = options.compress_us >= 0;
+    const auto max_error_ns = static_cast<std::int64_t>(options.compress_us * 1000.0);
+    std::vector<AxisCompressor> compressors(machine.axes.size());
+    std::int64_t events = 0;
+    std::int64_t runs = 0;
+
+    auto write = [&](const StepEvent& e) {
+        ++events;
+        if (compress) {
+            AxisCompressor& c = compressors[e.axis];
+            if (e.direction != c.direction || c.times.size() >= (std::size_t{1} << 20)) {
+                flush_axis(e.axis, c, max_error_ns, out.buffer(), runs);
+                if (e.direction != c.direction) {
+                    out.buffer() += fmt::format("set_next_step_dir {} {}\n", e.axis, e.direction);
+                    c.direction = e.direction;
+                }
+            }
+            c.times.push_back(e.t_ns);
+        } else if (options.text) {
+            out.buffer() += fmt::format("{} {} {}\n", e.t_ns, e.axis, e.direction);
+        } else {
+            append_record(out.buffer(), e);
+        }
+        out.maybe_flush();
+    };
+    auto drain = [&] {
+        TrajectoryPiece piece;
+        StepEvent event;
+        while (planner.pop(piece)) {
+            steps.add(piece);
+            while (steps.pop(event)) write(event);
+        }
+    };
+    for (;;) {
+        InterpResult result = interpreter->next();
+        if (std::holds_alternative<ProgramEnd>(result)) break;
+        if (const auto* diagnostic = std::get_if<Diagnostic>(&result)) {
+            print_diagnostic(*diagnostic);
+            return abandon();
+        }
+        planner.push(std::get<Move>(result));
+        if (!planner.diagnostics().empty()) break;
+        drain();
+    }
+    if (!planner.diagnostics().empty()) {
+        print_diagnostics(planner.diagnostics());
+        return abandon();
+    }
+    planner.finish();
+    drain();
+    steps.finish();
+    StepEvent event;
+    while (steps.pop(event)) write(event);
+    if (compress) {
+        for (std::size_t a = 0; a < compressors.size(); ++a) {
+            flush_axis(a, compressors[a], max_error_ns, out.buffer(), runs);
+        }
+    }
+    if (file != nullptr) {
+        out.flush();
+        if (std::fclose(file) != 0) {
+            std::filesystem::remove(partial);
+            fmt::print(stderr, "{}:0:0: error: cannot write the steps\n", options.output);
+            return exit_bad_input;
+        }
+        std::filesystem::rename(partial, options.output);
+    } else {
+        std::fwrite(out.buffer().data(), 1, out.buffer().size(), stdout);
+    }
+    if (compress) {
+        fmt::print(stderr, "steps: {} runs: {} compression ratio: {:.2f}\n", events, runs,
+                   runs > 0 ? static_cast<double>(events) / static_cast<double>(runs) : 0.0);
+    }
+    return 0;
+}
+
+}  // namespace
+
+void add_steps_verb(CLI::App& app, int& exit_status) {
+    auto options = std::make_shared<StepsOptions>();
+    CLI::App* verb = app.add_subcommand("steps", "Generate the exact step/direction events of a program");
+    verb->add_option("FILE", options->program, "NC program")->required();
+    add_machine_options(*verb, options->machine);
+    verb->add_option("-o,--output", options->output, "output file (default: stdout)");
+    verb->add_flag("--text", options->text, "one step a line: t_ns axis dir");
+    auto* compress = verb->add_option("--compress", options->compress_text,
+                                      "write queue_step runs with this maximum timing error, us (default 25)")
+                         ->expected(0, 1);
+    verb->callback([options, compress, &exit_status] {
+        if (compress->count() > 0) {
+            try {
+                options->compress_us = options->compress_text.empty() ? 25.0 : std::stod(options->compress_text);
+            } catch (const std::exception&) {
+                options->compress_us = -1;
+            }
+            if (!(options->compress_us >= 0)) {
+                fmt::print(stderr, "error: --compress needs a timing error in us, 0 or more\n");
+                exit_status = exit_bad_input;
+                return;
+            }
+        }
+        exit_status = run_steps(*options);
+    });
+}
+
+}  // namespace nckit::cli
