@@ -1,12 +1,12 @@
 // nckit expand FILE: the program with every macro resolved, as a plain program of one move per
 // block. With -o the file appears only when the whole program ran clean.
 #include <cstdio>
-#include <filesystem>
 #include <variant>
 
 #include <fmt/format.h>
 
 #include "common.hpp"
+#include "partial_file.hpp"
 #include "nckit/interp/move_gcode.hpp"
 #include "verbs.hpp"
 
@@ -24,23 +24,12 @@ int run_expand(const ExpandOptions& options) {
     // Expanding shows what a run would do; it is not a run, so #500-#999 stay as they were.
     auto interpreter = open_program_or_report(options.program, options.machine, false);
     if (!interpreter) return exit_bad_input;
-    std::filesystem::path temporary;
-    std::FILE* out = stdout;
+    std::optional<PartialFile> file;
     if (!options.output.empty()) {
-        temporary = options.output + ".partial";
-        out = std::fopen(temporary.c_str(), "wb");
-        if (out == nullptr) {
-            fmt::print(stderr, "{}:0:0: error: cannot write\n", options.output);
-            return exit_bad_input;
-        }
+        file = PartialFile::create(options.output);
+        if (!file) return exit_bad_input;
     }
-    auto abandon = [&] {
-        if (out != stdout) {
-            std::fclose(out);
-            std::filesystem::remove(temporary);
-        }
-        return exit_bad_input;
-    };
+    std::FILE* out = file ? file->get() : stdout;
     GcodeWriter writer(interpreter->machine());
     std::string buffer;
     writer.append_header(buffer, options.program);
@@ -48,9 +37,9 @@ int run_expand(const ExpandOptions& options) {
         InterpResult result = interpreter->next();
         if (std::holds_alternative<ProgramEnd>(result)) break;
         if (const auto* diagnostic = std::get_if<Diagnostic>(&result)) {
-            if (out == stdout) std::fwrite(buffer.data(), 1, buffer.size(), out);
+            if (!file) std::fwrite(buffer.data(), 1, buffer.size(), out);
             print_diagnostic(*diagnostic);
-            return abandon();
+            return exit_bad_input;  // an unfinished -o file goes with its PartialFile
         }
         writer.append(buffer, std::get<Move>(result));
         if (buffer.size() > (1 << 16)) {
@@ -60,14 +49,7 @@ int run_expand(const ExpandOptions& options) {
     }
     writer.append_footer(buffer);
     std::fwrite(buffer.data(), 1, buffer.size(), out);
-    if (out != stdout) {
-        if (std::fclose(out) != 0) {
-            std::filesystem::remove(temporary);
-            fmt::print(stderr, "{}:0:0: error: cannot write\n", options.output);
-            return exit_bad_input;
-        }
-        std::filesystem::rename(temporary, options.output);
-    }
+    if (file && !file->commit()) return exit_bad_input;
     return 0;
 }
 

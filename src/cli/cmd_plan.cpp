@@ -1,12 +1,12 @@
 // nckit plan FILE: interpret and plan the whole program; print the cycle time, the number of
 // moves and each axis's peak |v|, |a|, |j|; optionally a trace of the exact trajectory.
 #include <cstdio>
-#include <filesystem>
 #include <variant>
 
 #include <fmt/format.h>
 
 #include "common.hpp"
+#include "partial_file.hpp"
 #include "nckit/plan/planner.hpp"
 #include "nckit/plan/trajectory_stats.hpp"
 #include "verbs.hpp"
@@ -64,26 +64,14 @@ int run_plan(const PlanOptions& options) {
     PeakTracker peaks;
     double period_s = options.period_s > 0 ? options.period_s : machine.servo_period_s;
     TraceWriter trace(machine, period_s);
-    std::FILE* trace_file = nullptr;
-    std::filesystem::path trace_partial;
+    std::optional<PartialFile> trace_file;
     std::string trace_text;
     if (!options.trace.empty()) {
-        // Written beside its final name and renamed at the end: a bad program leaves no trace.
-        trace_partial = options.trace + ".partial";
-        trace_file = std::fopen(trace_partial.c_str(), "wb");
-        if (trace_file == nullptr) {
-            fmt::print(stderr, "{}:0:0: error: cannot write the trace\n", options.trace);
-            return exit_bad_input;
-        }
+        trace_file = PartialFile::create(options.trace);
+        if (!trace_file) return exit_bad_input;
         trace_text = trace.header();
     }
-    auto abandon = [&] {
-        if (trace_file != nullptr) {
-            std::fclose(trace_file);
-            std::filesystem::remove(trace_partial);
-        }
-        return exit_bad_input;
-    };
+    // A bad program plans nothing: returning drops the unfinished trace with its PartialFile.
     std::int64_t moves = 0;
     double cycle_time_s = 0;
     auto drain = [&] {
@@ -91,10 +79,10 @@ int run_plan(const PlanOptions& options) {
         while (planner.pop(piece)) {
             peaks.add(piece);
             cycle_time_s = piece.start_time_s + piece.duration_s;
-            if (trace_file != nullptr) {
+            if (trace_file) {
                 trace.add(piece, trace_text);
                 if (trace_text.size() > (1 << 16)) {
-                    std::fwrite(trace_text.data(), 1, trace_text.size(), trace_file);
+                    trace_file->write(trace_text);
                     trace_text.clear();
                 }
             }
@@ -105,7 +93,7 @@ int run_plan(const PlanOptions& options) {
         if (std::holds_alternative<ProgramEnd>(result)) break;
         if (const auto* diagnostic = std::get_if<Diagnostic>(&result)) {
             print_diagnostic(*diagnostic);
-            return abandon();
+            return exit_bad_input;
         }
         const Move& move = std::get<Move>(result);
         if (std::holds_alternative<Line>(move.what) || std::holds_alternative<Arc>(move.what) ||
@@ -118,19 +106,14 @@ int run_plan(const PlanOptions& options) {
     }
     if (!planner.diagnostics().empty()) {
         print_diagnostics(planner.diagnostics());
-        return abandon();
+        return exit_bad_input;
     }
     planner.finish();
     drain();
-    if (trace_file != nullptr) {
+    if (trace_file) {
         trace.finish(trace_text);
-        std::fwrite(trace_text.data(), 1, trace_text.size(), trace_file);
-        if (std::fclose(trace_file) != 0) {
-            std::filesystem::remove(trace_partial);
-            fmt::print(stderr, "{}:0:0: error: cannot write the trace\n", options.trace);
-            return exit_bad_input;
-        }
-        std::filesystem::rename(trace_partial, options.trace);
+        trace_file->write(trace_text);
+        if (!trace_file->commit()) return exit_bad_input;
     }
     print_report(options, machine, cycle_time_s, moves, peaks.peaks());
     return 0;

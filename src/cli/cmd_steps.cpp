@@ -12,7 +12,6 @@
 // A bad program writes nothing: the output goes to OUT.partial and is renamed at the end (to
 // stdout, when no -o is given, only after the whole program has been generated).
 #include <cstdio>
-#include <filesystem>
 #include <string>
 #include <variant>
 #include <vector>
@@ -20,6 +19,7 @@
 #include <fmt/format.h>
 
 #include "common.hpp"
+#include "partial_file.hpp"
 #include "nckit/drive/step_compress.hpp"
 #include "nckit/drive/step_generator.hpp"
 #include "nckit/plan/planner.hpp"
@@ -89,24 +89,13 @@ int run_steps(const StepsOptions& options) {
     Planner planner(machine);
     StepGenerator steps(machine);
 
-    std::FILE* file = nullptr;
-    std::filesystem::path partial;
+    std::optional<PartialFile> file;
     if (!options.output.empty()) {
-        partial = options.output + ".partial";
-        file = std::fopen(partial.c_str(), "wb");
-        if (file == nullptr) {
-            fmt::print(stderr, "{}:0:0: error: cannot write the steps\n", options.output);
-            return exit_bad_input;
-        }
+        file = PartialFile::create(options.output);
+        if (!file) return exit_bad_input;
     }
-    auto abandon = [&] {
-        if (file != nullptr) {
-            std::fclose(file);
-            std::filesystem::remove(partial);
-        }
-        return exit_bad_input;
-    };
-    Output out(file);
+    // A bad program writes nothing: returning drops the unfinished output with its PartialFile.
+    Output out(file ? file->get() : nullptr);
     const bool compress = options.compress_us >= 0;
     const auto max_error_ns = static_cast<std::int64_t>(options.compress_us * 1000.0);
     std::vector<AxisCompressor> compressors(machine.axes.size());
@@ -145,7 +134,7 @@ int run_steps(const StepsOptions& options) {
         if (std::holds_alternative<ProgramEnd>(result)) break;
         if (const auto* diagnostic = std::get_if<Diagnostic>(&result)) {
             print_diagnostic(*diagnostic);
-            return abandon();
+            return exit_bad_input;
         }
         planner.push(std::get<Move>(result));
         if (!planner.diagnostics().empty()) break;
@@ -153,7 +142,7 @@ int run_steps(const StepsOptions& options) {
     }
     if (!planner.diagnostics().empty()) {
         print_diagnostics(planner.diagnostics());
-        return abandon();
+        return exit_bad_input;
     }
     planner.finish();
     drain();
@@ -165,14 +154,9 @@ int run_steps(const StepsOptions& options) {
             flush_axis(a, compressors[a], max_error_ns, out.buffer(), runs);
         }
     }
-    if (file != nullptr) {
+    if (file) {
         out.flush();
-        if (std::fclose(file) != 0) {
-            std::filesystem::remove(partial);
-            fmt::print(stderr, "{}:0:0: error: cannot write the steps\n", options.output);
-            return exit_bad_input;
-        }
-        std::filesystem::rename(partial, options.output);
+        if (!file->commit()) return exit_bad_input;
     } else {
         std::fwrite(out.buffer().data(), 1, out.buffer().size(), stdout);
     }
