@@ -153,6 +153,15 @@ const toml::array* TableReader::array(std::string_view key, Need need) {
     return nullptr;
 }
 
+const toml::table* TableReader::table(std::string_view key, Need need) {
+    const toml::node* found = node(key, need);
+    if (found == nullptr) return nullptr;
+    if (const toml::table* sub = found->as_table()) return sub;
+    sink_.error(found->source(), "config-type",
+                fmt::format("'{}' must be a table ([{}]), not {}", key, key, type_name(found->type())));
+    return nullptr;
+}
+
 std::optional<std::size_t> TableReader::choice(std::string_view key, Need need,
                                                 std::string_view noun,
                                                 std::initializer_list<std::string_view> choices) {

@@ -1,0 +1,133 @@
+// The crosshatch job file: one [crosshatch] table, every key checked where it stands.
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "nckit/core/toml_file.hpp"
+#include "nckit/core/toml_table_reader.hpp"
+#include "nckit/drive/phase_table.hpp"
+#include "nckit/process/crosshatch.hpp"
+
+namespace nckit {
+
+namespace {
+
+using detail::ConfigSink;
+using detail::Need;
+using detail::Sign;
+using detail::TableReader;
+
+void read_number(TableReader& reader, std::string_view key, Need need, Sign sign, double& out) {
+    if (const std::optional<double> value = reader.number(key, need, sign)) out = *value;
+}
+
+// A value the physics allows but no bore-hardening cell has: most likely a unit mistake (m for
+// mm, rev/s for rpm), which would otherwise produce a scan of hours or of no steps at all.
+void check_at_most(TableReader& reader, ConfigSink& sink, std::string_view key, double value, double limit,
+                   std::string_view unit) {
+    if (value > limit) {
+        sink.error(reader.region_of(key), "config-value",
+                   fmt::format("'{}' = {} is beyond any bore-hardening cell (at most {} {})", key, value, limit, unit));
+    }
+}
+
+void read_crosshatch(const toml::table& table, CrosshatchJob& job, ConfigSink& sink) {
+    TableReader reader(table, "[crosshatch]", sink);
+    read_number(reader, "bore_diameter_mm", Need::required, Sign::positive, job.bore_diameter_mm);
+    read_number(reader, "bore_length_mm", Need::required, Sign::positive, job.bore_length_mm);
+    read_number(reader, "lead_screw_pitch_mm", Need::required, Sign::positive, job.lead_screw_pitch_mm);
+    if (const std::optional<int> heads = reader.integer("heads", Need::required, Sign::positive)) job.heads = *heads;
+    read_number(reader, "lines_per_length", Need::required, Sign::positive, job.lines_per_length);
+    read_number(reader, "feed_screw_rpm", Need::required, Sign::positive, job.feed_screw_rpm);
+    job.feed_screw_rpm_at = sink.at(reader.region_of("feed_screw_rpm"));
+    read_number(reader, "step_angle_deg", Need::optional, Sign::positive, job.step_angle_deg);
+    read_number(reader, "gear_ratio", Need::optional, Sign::positive, job.gear_ratio);
+    read_number(reader, "timer_clock_hz", Need::optional, Sign::positive, job.timer_clock_hz);
+    job.timer_clock_at = sink.at(reader.region_of("timer_clock_hz"));
+    if (const std::optional<int> divisor = reader.integer("timer_max_divisor", Need::optional, Sign::positive)) {
+        if (*divisor < 2 || *divisor > 65536) {
+            sink.error(reader.region_of("timer_max_divisor"), "config-value",
+                       fmt::format("'timer_max_divisor' must be 2 to 65536 (a 16-bit counter), not {}", *divisor));
+        } else {
+            job.timer_max_divisor = static_cast<std::uint32_t>(*divisor);
+        }
+    }
+    job.index_deg = -1;
+    read_number(reader, "index_deg", Need::optional, Sign::non_negative, job.index_deg);
+    if (job.index_deg > 360) {
+        sink.error(reader.region_of("index_deg"), "config-value",
+                   fmt::format("'index_deg' must be 0 to 360, not {}", job.index_deg));
+    }
+    if (const std::optional<int> cycles = reader.integer("cycles", Need::optional, Sign::positive)) {
+        job.cycles = *cycles;
+    }
+    read_number(reader, "index_rpm", Need::optional, Sign::positive, job.index_rpm);
+    job.index_rpm_at = sink.at(reader.region_of("index_rpm"));
+    if (const std::optional<std::size_t> timing =
+            reader.choice("timing", Need::optional, "timing", {"one_time_base", "free_running_timers"})) {
+        job.timing = *timing == 0 ? CrosshatchTiming::one_time_base : CrosshatchTiming::free_running_timers;
+    }
+    if (const std::optional<std::string> table_name = reader.text("phase_table", Need::optional)) {
+        if (const auto kind = drive::parse_phase_table(*table_name)) {
+            job.phase_table = *kind;
+        } else {
+            sink.error(reader.region_of("phase_table"), "config-value",
+                       fmt::format("phase table '{}' is not one of {}", *table_name, fmt::join(phase_table_names, " ")));
+        }
+    }
+    if (auto code = reader.integer("laser_on_mcode", Need::optional, Sign::non_negative)) job.laser_on_mcode = *code;
+    if (auto code = reader.integer("laser_off_mcode", Need::optional, Sign::non_negative)) job.laser_off_mcode = *code;
+    reader.reject_unknown_keys();
+
+    check_at_most(reader, sink, "bore_diameter_mm", job.bore_diameter_mm, 2000, "mm");
+    check_at_most(reader, sink, "bore_length_mm", job.bore_length_mm, 5000, "mm");
+    check_at_most(reader, sink, "lead_screw_pitch_mm", job.lead_screw_pitch_mm, 100, "mm");
+    check_at_most(reader, sink, "heads", job.heads, 360, "helix starts");
+    check_at_most(reader, sink, "lines_per_length", job.lines_per_length, 10000, "lines");
+    check_at_most(reader, sink, "cycles", job.cycles, 3600, "cycles");
+    check_at_most(reader, sink, "timer_clock_hz", job.timer_clock_hz, 1e9, "Hz");
+    if (job.step_angle_deg >= 360) {
+        sink.error(reader.region_of("step_angle_deg"), "config-value",
+                   fmt::format("'step_angle_deg' must be below 360, not {}", job.step_angle_deg));
+    }
+    if (job.laser_on_mcode == job.laser_off_mcode) {
+        sink.error(reader.region_of("laser_off_mcode"), "config-value",
+                   fmt::format("the laser-on and laser-off M-codes are both M{}", job.laser_on_mcode));
+    }
+    if (job.heads > 0) {
+        if (job.index_deg < 0) job.index_deg = 360.0 / job.heads;
+        if (job.cycles == 0) job.cycles = job.heads;
+    }
+}
+
+Result<CrosshatchJob> read_job(const detail::TomlFile& file) {
+    ConfigSink sink{file.name, {}};
+    CrosshatchJob job;
+    job.file_at = make_location(file.name, 1, 1);
+    TableReader root(file.document, "", sink);
+    if (const toml::table* table = root.table("crosshatch", Need::optional)) {
+        read_crosshatch(*table, job, sink);
+    } else if (!root.has("crosshatch")) {
+        sink.error(root.region(), "config-missing-key", "missing table [crosshatch]");
+    }
+    root.reject_unknown_keys();
+    if (sink.diagnostics.empty()) return job;
+    detail::sort_by_position(sink.diagnostics);
+    return std::move(sink.diagnostics);
+}
+
+}  // namespace
+
+Result<CrosshatchJob> parse_crosshatch_job(std::string_view toml_text, const std::string& file_name) {
+    Result<detail::TomlFile> file = detail::parse_toml_text(toml_text, file_name);
+    if (!file) return file.diagnostics();
+    return read_job(*file);
+}
+
+Result<CrosshatchJob> load_crosshatch_job(const std::filesystem::path& path) {
+    Result<detail::TomlFile> file = detail::load_toml_file(path, "crosshatch job");
+    if (!file) return file.diagnostics();
+    return read_job(*file);
+}
+
+}  // namespace nckit
