@@ -8,6 +8,7 @@
 #include "common.hpp"
 #include "partial_file.hpp"
 #include "nckit/plan/planner.hpp"
+#include "nckit/plan/sync_report.hpp"
 #include "nckit/plan/trajectory_stats.hpp"
 #include "verbs.hpp"
 
@@ -25,10 +26,22 @@ struct PlanOptions {
     double override_pct = 100;
 };
 
+std::string sync_json(const SyncReport& sync) {
+    std::string out = fmt::format("\"spindle_sync\":{{\"starts\":{},\"max_index_error_deg\":{},\"first\":[",
+                                  sync.count(), sync.max_index_error_deg());
+    for (std::size_t i = 0; i < sync.starts().size(); ++i) {
+        const SyncStart& s = sync.starts()[i];
+        out += fmt::format("{}{{\"line\":{},\"t_s\":{},\"wait_s\":{},\"spindle_angle_deg\":{},\"encoder_count\":{}}}",
+                           i == 0 ? "" : ",", s.where.line, s.t_s, s.wait_s, s.spindle_angle_deg, s.encoder_count);
+    }
+    return out + "]}";
+}
+
 void print_report(const PlanOptions& options, const MachineConfig& machine, double cycle_time_s,
-                  std::int64_t moves, const AxisPeaks& peaks) {
+                  std::int64_t moves, const AxisPeaks& peaks, const SyncReport& sync) {
     if (options.json) {
-        std::string out = fmt::format("{{\"cycle_time_s\":{},\"moves\":{},\"axes\":{{", cycle_time_s, moves);
+        std::string out = fmt::format("{{\"cycle_time_s\":{},\"moves\":{},{},\"axes\":{{", cycle_time_s, moves,
+                                      sync_json(sync));
         bool first = true;
         for (std::size_t i = 0; i < axis_count; ++i) {
             auto axis = static_cast<Axis>(i);
@@ -42,6 +55,10 @@ void print_report(const PlanOptions& options, const MachineConfig& machine, doub
         return;
     }
     fmt::print("cycle time: {:.6f} s\nmoves: {}\n", cycle_time_s, moves);
+    if (sync.count() > 0) {
+        fmt::print("G32/G33 starts: {}, each on the spindle index (largest error {:.3g} deg)\n", sync.count(),
+                   sync.max_index_error_deg());
+    }
     fmt::print("axis {:>16} {:>18} {:>18}\n", "max |v|", "max |a|", "max |j|");
     for (const AxisConfig& axis : machine.axes) {
         const char* unit = axis.kind == AxisKind::rotary ? "deg" : "mm";
@@ -62,6 +79,7 @@ int run_plan(const PlanOptions& options) {
     planner_options.feed_override = options.override_pct / 100.0;
     Planner planner(machine, planner_options);
     PeakTracker peaks;
+    SyncReport sync(machine.spindle);
     double period_s = options.period_s > 0 ? options.period_s : machine.servo_period_s;
     TraceWriter trace(machine, period_s);
     std::optional<PartialFile> trace_file;
@@ -78,6 +96,7 @@ int run_plan(const PlanOptions& options) {
         TrajectoryPiece piece;
         while (planner.pop(piece)) {
             peaks.add(piece);
+            sync.add(piece);
             cycle_time_s = piece.start_time_s + piece.duration_s;
             if (trace_file) {
                 trace.add(piece, trace_text);
@@ -115,7 +134,7 @@ int run_plan(const PlanOptions& options) {
         trace_file->write(trace_text);
         if (!trace_file->commit()) return exit_bad_input;
     }
-    print_report(options, machine, cycle_time_s, moves, peaks.peaks());
+    print_report(options, machine, cycle_time_s, moves, peaks.peaks(), sync);
     return 0;
 }
 

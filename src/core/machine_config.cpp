@@ -204,6 +204,16 @@ void read_spindle(const toml::table& table, MachineConfig& config, ConfigSink& s
     if (auto counts = reader.integer("encoder_counts", Need::optional, Sign::positive)) {
         config.spindle.encoder_counts = *counts;
     }
+    read_into(reader, "ripple_fraction", Need::optional, Sign::non_negative, config.spindle.ripple_fraction);
+    if (config.spindle.ripple_fraction >= 0.5) {
+        sink.error(reader.region_of("ripple_fraction"), "config-value",
+                   fmt::format("'ripple_fraction' must be below 0.5 (a speed swinging by half stalls the cut), not {}",
+                               config.spindle.ripple_fraction));
+    }
+    if (auto harmonic = reader.integer("ripple_per_turn", Need::optional, Sign::positive)) {
+        config.spindle.ripple_per_turn = *harmonic;
+    }
+    read_into(reader, "ripple_phase_deg", Need::optional, Sign::any, config.spindle.ripple_phase_deg);
     reader.reject_unknown_keys();
 }
 

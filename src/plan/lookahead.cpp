@@ -247,9 +247,18 @@ void Lookahead::emit_event(const WindowEvent& event, const AxisVector& position)
     piece.segment = make_line(position, position);
     piece.start_time_s = clock_s_;
     piece.duration_s = event.kind == PieceKind::dwell ? std::max(0.0, event.dwell_s) : 0.0;
+    if (event.wait_index) {
+        // The planner refuses G32/G33 with the spindle stopped, so an index always comes.
+        const std::optional<double> index_s = spindle_.next_index_s(clock_s_);
+        piece.duration_s = index_s ? *index_s - clock_s_ : 0.0;
+        piece.waits_for_index = true;
+    }
     piece.where = event.where;
     piece.sequence_number = event.sequence_number;
     piece.io = event.io;
+    if (event.kind == PieceKind::io && spindle_command_.apply(event.io)) {
+        spindle_.set_speed(clock_s_, spindle_command_.signed_rpm(spindle_.config()));
+    }
     clock_s_ += piece.duration_s;
     output_.push_back(std::move(piece));
 }

@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "nckit/plan/spindle_model.hpp"
 #include "nckit/plan/trajectory.hpp"
 
 namespace nckit::plan_detail {
@@ -54,6 +55,7 @@ struct WindowEvent {
     PieceKind kind = PieceKind::io;
     Io io;
     double dwell_s = 0;  //!< s, dwell only
+    bool wait_index = false;  //!< dwell until the spindle's next index pulse (G32/G33), not dwell_s
     SourceLocation where;
     std::int64_t sequence_number = -1;
 };
@@ -90,7 +92,8 @@ inline constexpr double run_spread = 1.05;
 
 class Lookahead {
 public:
-    Lookahead(ProfileKind kind, std::size_t window_moves) : kind_(kind), window_(window_moves) {}
+    Lookahead(ProfileKind kind, std::size_t window_moves, const SpindleConfig& spindle = {})
+        : kind_(kind), window_(window_moves), spindle_(spindle) {}
 
     //! Appends a segment (length > 0). Its junction_max is the caller's limit at its end; the
     //! next add() lowers it to the next segment's speed limit.
@@ -127,6 +130,9 @@ private:
     RingQueue<TrajectoryPiece> output_;
     double start_speed_ = 0;  //!< mm/s at the start of segments_.front() (final)
     double clock_s_ = 0;      //!< s, end of the last committed piece
+    //! The spindle on the committed pieces' clock: I/O events set its speed, index waits read it.
+    SpindleModel spindle_;
+    SpindleCommand spindle_command_;
     bool finished_ = false;
     std::size_t added_since_plan_ = 0;
     std::size_t left_after_plan_ = 0;

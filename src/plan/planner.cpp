@@ -2,6 +2,8 @@
 #include "nckit/plan/planner.hpp"
 
 #include <cmath>
+
+#include <fmt/format.h>
 #include <limits>
 #include <stdexcept>
 #include <utility>
@@ -47,12 +49,14 @@ struct Planner::Impl {
     bool have_position = false;            //!< a motion has told where the machine is
     std::vector<WindowEvent> leading_events;  //!< events before the first motion: place unknown
     Diagnostics diagnostics;
+    SpindleCommand spindle;         //!< the spindle as the moves pushed so far leave it
+    bool last_motion_sync = false;  //!< the last motion was G32/G33: a thread goes on at speed
 
     Impl(MachineConfig m, PlannerOptions o)
         : machine(std::move(m)),
           options(o),
           kind(o.profile.value_or(machine.profile)),
-          lookahead(kind, o.window_moves) {}
+          lookahead(kind, o.window_moves, machine.spindle) {}
 
     void add_segment(PathSegment path, const ProfileLimits& limits, double junction_max, const SourceLocation& where,
                      std::int64_t sequence_number, bool blend, std::vector<WindowEvent> after) {
@@ -171,21 +175,87 @@ struct Planner::Impl {
         }
     }
 
+    //! mm/s of a programmed feed. G95 follows the spindle: mm/rev times the speed it turns at
+    //! on average (its ripple slows a turn), not the S word alone; without a turning spindle the
+    //! interpreter's figure stands (0 when it knew no speed either: "no usable feed").
+    [[nodiscard]] double feed_mm_s(const Feed& feed) const {
+        if (feed.mode != FeedMode::per_revolution) return feed.mm_per_min / 60.0;
+        const double rpm = std::abs(spindle.signed_rpm(machine.spindle));
+        if (rpm == 0.0) return feed.mm_per_min / 60.0;
+        const double r = machine.spindle.ripple_fraction;
+        return feed.mm_per_rev * rpm * std::sqrt(1.0 - r * r) / 60.0;
+    }
+
+    //! G32/G33: the axes stop, wait for the index pulse, and move the lead per turn, without
+    //! feed override (locked, as on Fanuc and LinuxCNC). A thread chained to the previous G32
+    //! goes on at speed; anything else in between means a new wait, so every pass of a
+    //! repeated thread starts at the same spindle angle.
+    void sync_motion(const SyncMove& sync, const Move& move, bool after_sync) {
+        const double rpm = spindle.signed_rpm(machine.spindle);
+        if (rpm == 0.0) {
+            diagnostics.push_back(error_at(move.where, "sync-spindle-stopped",
+                                           "G32/G33 needs the spindle turning (M3 or M4 with S): no index pulse to wait for"));
+            return;
+        }
+        PathSegment path = make_line(sync.from, sync.to);
+        if (!(path.length > min_length)) return;
+        const double r = machine.spindle.ripple_fraction;
+        const double speed_mm_s = sync.feed.mm_per_rev * std::abs(rpm) * std::sqrt(1.0 - r * r) / 60.0;
+        if (!(speed_mm_s > 0)) {
+            diagnostics.push_back(error_at(move.where, "no-feed", "G32/G33 with no lead (F)"));
+            return;
+        }
+        if (!check_axes(path, move.where)) return;
+        const ProfileLimits limits = plan_detail::segment_limits(path, machine, speed_mm_s, kind);
+        // The axes must keep up with the spindle's fastest moment, not only its mean.
+        const double peak_mm_s = sync.feed.mm_per_rev * std::abs(rpm) * (1.0 + r) / 60.0;
+        const ProfileLimits axis_limits =
+            plan_detail::segment_limits(path, machine, std::numeric_limits<double>::infinity(), kind);
+        if (peak_mm_s > axis_limits.max_velocity * (1.0 + 1e-9)) {
+            diagnostics.push_back(error_at(
+                move.where, "sync-too-fast",
+                fmt::format("a lead of {} mm/rev at {} rpm needs {:.6g} mm/s along the thread, more than the axes' "
+                            "{:.6g} mm/s: lower S",
+                            sync.feed.mm_per_rev, std::abs(rpm), peak_mm_s, axis_limits.max_velocity)));
+            return;
+        }
+        if (!after_sync) {
+            release_pending(0.0);
+            WindowEvent wait;
+            wait.kind = PieceKind::dwell;
+            wait.wait_index = true;
+            wait.where = move.where;
+            wait.sequence_number = move.sequence_number;
+            event(std::move(wait), true);
+        }
+        Pending next;
+        next.limits = limits;
+        next.full_length = path.length;
+        next.path = std::move(path);
+        next.feed_mm_s = speed_mm_s;
+        next.blendable = false;
+        next.where = move.where;
+        next.sequence_number = move.sequence_number;
+        connect(std::move(next));
+        last_motion_sync = true;
+    }
+
     void push(const Move& move) {
         if (!diagnostics.empty()) return;
         const double override_factor = options.feed_override;
+        const bool after_sync = std::exchange(last_motion_sync, false);
         if (const auto* line = std::get_if<Line>(&move.what)) {
             locate(line->from);
             const double feed = line->rapid ? std::numeric_limits<double>::infinity()
-                                            : line->feed.mm_per_min / 60.0 * override_factor;
+                                            : feed_mm_s(line->feed) * override_factor;
             motion(make_line(line->from, line->to), feed, !line->rapid, line->path, move);
         } else if (const auto* arc = std::get_if<Arc>(&move.what)) {
             locate(arc->from);
-            motion(make_arc(*arc), arc->feed.mm_per_min / 60.0 * override_factor, false, arc->path, move);
+            motion(make_arc(*arc), feed_mm_s(arc->feed) * override_factor, false, arc->path, move);
         } else if (const auto* sync = std::get_if<SyncMove>(&move.what)) {
-            // Planned at feed.mm_per_min until the spindle model arrives; never blended.
             locate(sync->from);
-            motion(make_line(sync->from, sync->to), sync->feed.mm_per_min / 60.0 * override_factor, false, {}, move);
+            sync_motion(*sync, move, after_sync);
+            return;
         } else if (const auto* dwell = std::get_if<Dwell>(&move.what)) {
             WindowEvent e;
             e.kind = PieceKind::dwell;
@@ -194,6 +264,7 @@ struct Planner::Impl {
             e.sequence_number = move.sequence_number;
             event(std::move(e), true);
         } else if (const auto* io = std::get_if<Io>(&move.what)) {
+            spindle.apply(*io);
             const bool waits = io->waits || (io->kind == IoKind::mcode && machine.is_exact_stop_mcode(io->number));
             WindowEvent e;
             e.kind = PieceKind::io;

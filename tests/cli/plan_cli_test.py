@@ -66,6 +66,24 @@ def main() -> int:
         check(not bad_trace.exists() and not pathlib.Path(str(bad_trace) + ".partial").exists(),
               "a bad program leaves no trace file")
         check(run.stdout == "", "a bad program prints no report")
+
+        # Threading: every G32 pass waits for the spindle index; the spindle model, replayed, agrees.
+        thread = ROOT / "examples" / "03_lathe_thread.ngc"
+        lathe = ROOT / "examples" / "machines" / "lathe.toml"
+        run = plan(nckit, thread, "--machine", lathe, "--json")
+        check(run.returncode == 0, "the thread example plans")
+        sync = json.loads(run.stdout)["spindle_sync"]
+        check(sync["starts"] == 4 and len(sync["first"]) == 4, "four thread passes")
+        check(sync["max_index_error_deg"] < 1e-6, "every pass starts on the index")
+        turn_s = 60 / 600
+        check(all(0 <= s["wait_s"] < turn_s for s in sync["first"]), "each wait is under one turn")
+        check(all(abs(s["t_s"] * 3600 / 360 - round(s["t_s"] * 3600 / 360)) < 1e-6 for s in sync["first"]),
+              "600 rpm from t = 0: each start is a whole number of turns")
+        stopped = pathlib.Path(tmp) / "stopped.ngc"
+        stopped.write_text("G18 G21 G90\nG0 X20 Z5\nG32 Z-20 F1.5\nM30\n")
+        run = plan(nckit, stopped, "--machine", lathe)
+        check(run.returncode == 2 and "stopped.ngc:3:1: error: G32/G33 needs the spindle turning" in run.stderr,
+              "G32 with the spindle stopped is refused")
     print(f"{checks - len(failures)} passed, {len(failures)} failed")
     return 1 if failures else 0
 

@@ -38,6 +38,19 @@ public:
         position = to;
     }
     void dwell(double s) { add(Dwell{s}, 0); }
+    //! G32/G33 with `lead_mm` per spindle turn.
+    void thread(AxisVector to, double lead_mm) {
+        SyncMove sync{position, to, Feed{FeedMode::per_revolution, 0, lead_mm}};
+        add(sync, 0);
+        position = to;
+    }
+    //! M3/M4 (number 3 or 4) at `rpm`, or M5.
+    void spindle(int number, double rpm = 0) {
+        Io io;
+        io.number = number;
+        io.value = rpm;
+        add(io, 0);
+    }
     void mcode(int number, bool waits = false) {
         Io io;
         io.number = number;

@@ -51,7 +51,12 @@ struct AxisConfig {
 
 struct SpindleConfig {
     double max_rpm = 0;       //!< rpm
-    int encoder_counts = 0;   //!< counts per spindle turn
+    int encoder_counts = 0;   //!< counts per spindle turn; the index pulse comes at angle 0
+    //! Speed ripple the drive leaves, repeating with the angle: n = rpm·(1 + fraction·
+    //! sin(per_turn·θ + phase)). 0 for an ideal spindle.
+    double ripple_fraction = 0;
+    int ripple_per_turn = 1;      //!< cycles of the ripple per spindle turn
+    double ripple_phase_deg = 0;  //!< deg, the ripple's phase at the index
 };
 
 struct MachineConfig {

@@ -28,7 +28,9 @@ struct PlannerOptions {
 //! (segment_limits.hpp); junctions pass at speed only when tangent (junction.hpp), straight
 //! corners under G64 are rounded by a blend arc within the tolerance, everything else stops,
 //! as do G61/G9, dwells and waiting M-codes; I/O that does not wait becomes a zero-duration
-//! piece at its place. SyncMove (G32/G33) and G95 moves are planned at feed.mm_per_min.
+//! piece at its place. G95 feeds follow the spindle model's mean speed (spindle_model.hpp);
+//! G32/G33 stop, wait for the index pulse (a dwell piece with waits_for_index) and move the
+//! lead per turn at that speed, without override; a G32 chained to the previous one goes on.
 class Planner {
 public:
     //! Throws std::invalid_argument for options out of range (a programming error).

@@ -32,6 +32,7 @@ struct TrajectoryPiece {
     std::int64_t sequence_number = -1;  //!< the block's N number, -1 when none
     Io io;                    //!< io pieces only
     bool blend = false;       //!< motion inserted by the planner to round a corner
+    bool waits_for_index = false;  //!< a dwell until the spindle's index pulse (before G32/G33)
 };
 
 //! The axes' state at one time, exact (from the piecewise-cubic profile and the segment's
