@@ -77,8 +77,7 @@ std::complex<double> frequency_response(const ServoParameters& p, double omega_r
     return p.gain / std::complex<double>(1.0 - wt * wt, 2.0 * p.damping * wt);
 }
 
-ServoModel::ServoModel(const ServoParameters& parameters, double period_s, ServoState initial)
-    : parameters_(parameters), period_s_(period_s), state_(initial), deviation_(initial.position) {
+ServoDiscretisation discretise(const ServoParameters& parameters, double period_s) {
     const bool finite = std::isfinite(parameters.gain) && std::isfinite(parameters.damping) &&
                         std::isfinite(parameters.time_constant_s) && std::isfinite(period_s);
     if (!finite || parameters.time_constant_s <= 0.0 || parameters.damping < 0.0 ||
@@ -86,12 +85,22 @@ ServoModel::ServoModel(const ServoParameters& parameters, double period_s, Servo
         throw std::invalid_argument(
             "servo model needs finite gain, time constant > 0, damping >= 0 and period > 0");
     }
-    phi_ = transition_matrix(parameters.natural_frequency_rad_s(), parameters.damping, period_s);
+    ServoDiscretisation d;
+    d.period_s = period_s;
+    d.transition = transition_matrix(parameters.natural_frequency_rad_s(), parameters.damping, period_s);
     // With u held, e = y - k u obeys the free equation, so x(h) = Phi x0 + (I - Phi) (k u, 0):
     // Gamma = (I - Phi) (k, 0)^T. step() applies Phi to (e, v) rather than adding Gamma u:
     // I - Phi is ill-conditioned for w h << 1, and in the error form a held setpoint settles
     // at k u exactly.
-    gamma_ = {parameters.gain * (1.0 - phi_[0][0]), -parameters.gain * phi_[1][0]};
+    d.input_gain = {parameters.gain * (1.0 - d.transition[0][0]), -parameters.gain * d.transition[1][0]};
+    return d;
+}
+
+ServoModel::ServoModel(const ServoParameters& parameters, double period_s, ServoState initial)
+    : parameters_(parameters), period_s_(period_s), state_(initial), deviation_(initial.position) {
+    const ServoDiscretisation d = discretise(parameters, period_s);
+    phi_ = d.transition;
+    gamma_ = d.input_gain;
 }
 
 ServoState ServoModel::step(double setpoint) {

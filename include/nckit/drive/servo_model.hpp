@@ -26,6 +26,17 @@ struct ServoState {
     double velocity = 0.0;  //!< mm/s (deg/s): dy/dt
 };
 
+//! The exact zero-order-hold map over one period h: x(h) = Phi x(0) + Gamma u.
+struct ServoDiscretisation {
+    double period_s = 0.0;                              //!< h, s
+    std::array<std::array<double, 2>, 2> transition{};  //!< Phi = exp(A h), (position, velocity)
+    std::array<double, 2> input_gain{};                 //!< Gamma = (I - Phi) (k, 0)^T
+};
+
+//! Phi and Gamma for any period, closed form (the same numbers ServoModel uses). Throws
+//! std::invalid_argument for the parameters ServoModel rejects.
+[[nodiscard]] ServoDiscretisation discretise(const ServoParameters& parameters, double period_s);
+
 //! The model discretised exactly for a setpoint held constant over each servo period (zero-order
 //! hold): x[n+1] = Phi x[n] + Gamma u[n] (computed as Phi applied to the deviation from the
 //! settled state (k u, 0), which is the same map), with Phi = exp(A h) in closed form for zeta < 1,
