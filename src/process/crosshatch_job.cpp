@@ -35,6 +35,7 @@ void read_crosshatch(const toml::table& table, CrosshatchJob& job, ConfigSink& s
     TableReader reader(table, "[crosshatch]", sink);
     read_number(reader, "bore_diameter_mm", Need::required, Sign::positive, job.bore_diameter_mm);
     read_number(reader, "bore_length_mm", Need::required, Sign::positive, job.bore_length_mm);
+    job.bore_length_at = sink.at(reader.region_of("bore_length_mm"));
     read_number(reader, "lead_screw_pitch_mm", Need::required, Sign::positive, job.lead_screw_pitch_mm);
     if (const std::optional<int> heads = reader.integer("heads", Need::required, Sign::positive)) job.heads = *heads;
     read_number(reader, "lines_per_length", Need::required, Sign::positive, job.lines_per_length);
@@ -100,34 +101,14 @@ void read_crosshatch(const toml::table& table, CrosshatchJob& job, ConfigSink& s
     }
 }
 
-Result<CrosshatchJob> read_job(const detail::TomlFile& file) {
-    ConfigSink sink{file.name, {}};
-    CrosshatchJob job;
-    job.file_at = make_location(file.name, 1, 1);
-    TableReader root(file.document, "", sink);
-    if (const toml::table* table = root.table("crosshatch", Need::optional)) {
-        read_crosshatch(*table, job, sink);
-    } else if (!root.has("crosshatch")) {
-        sink.error(root.region(), "config-missing-key", "missing table [crosshatch]");
-    }
-    root.reject_unknown_keys();
-    if (sink.diagnostics.empty()) return job;
-    detail::sort_by_position(sink.diagnostics);
-    return std::move(sink.diagnostics);
-}
-
 }  // namespace
 
 Result<CrosshatchJob> parse_crosshatch_job(std::string_view toml_text, const std::string& file_name) {
-    Result<detail::TomlFile> file = detail::parse_toml_text(toml_text, file_name);
-    if (!file) return file.diagnostics();
-    return read_job(*file);
+    return detail::parse_job_text<CrosshatchJob>(toml_text, file_name, "crosshatch", read_crosshatch);
 }
 
 Result<CrosshatchJob> load_crosshatch_job(const std::filesystem::path& path) {
-    Result<detail::TomlFile> file = detail::load_toml_file(path, "crosshatch job");
-    if (!file) return file.diagnostics();
-    return read_job(*file);
+    return detail::load_job_file<CrosshatchJob>(path, "crosshatch job", "crosshatch", read_crosshatch);
 }
 
 }  // namespace nckit

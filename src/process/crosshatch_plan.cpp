@@ -68,7 +68,7 @@ Result<CrosshatchPlan> plan_crosshatch(const CrosshatchJob& job) {
         errors.insert(errors.end(), setting->diagnostics().begin(), setting->diagnostics().end());
     }
     if (plan.feed_steps_per_stroke < 1) {
-        errors.push_back(error_at(job.file_at, "crosshatch-stroke",
+        errors.push_back(error_at(job.bore_length_at, "crosshatch-stroke",
                                   fmt::format("a {} mm stroke is less than one feed step ({} mm)", job.bore_length_mm,
                                               1.0 / plan.feed.steps_per_unit)));
     }

@@ -52,7 +52,7 @@ struct CrosshatchJob {
     SourceLocation feed_screw_rpm_at;
     SourceLocation timer_clock_at;
     SourceLocation index_rpm_at;
-    SourceLocation file_at;
+    SourceLocation bore_length_at;
 };
 
 //! Reads and checks a job file; every error carries FILE:LINE:COL.
