@@ -17,10 +17,6 @@ using detail::Need;
 using detail::Sign;
 using detail::TableReader;
 
-void read_number(TableReader& reader, std::string_view key, Need need, Sign sign, double& out) {
-    if (const std::optional<double> value = reader.number(key, need, sign)) out = *value;
-}
-
 // A value the physics allows but no bore-hardening cell has: most likely a unit mistake (m for
 // mm, rev/s for rpm), which would otherwise produce a scan of hours or of no steps at all.
 void check_at_most(TableReader& reader, ConfigSink& sink, std::string_view key, double value, double limit,
@@ -33,17 +29,17 @@ void check_at_most(TableReader& reader, ConfigSink& sink, std::string_view key, 
 
 void read_crosshatch(const toml::table& table, CrosshatchJob& job, ConfigSink& sink) {
     TableReader reader(table, "[crosshatch]", sink);
-    read_number(reader, "bore_diameter_mm", Need::required, Sign::positive, job.bore_diameter_mm);
-    read_number(reader, "bore_length_mm", Need::required, Sign::positive, job.bore_length_mm);
+    reader.number_into("bore_diameter_mm", Need::required, Sign::positive, job.bore_diameter_mm);
+    reader.number_into("bore_length_mm", Need::required, Sign::positive, job.bore_length_mm);
     job.bore_length_at = sink.at(reader.region_of("bore_length_mm"));
-    read_number(reader, "lead_screw_pitch_mm", Need::required, Sign::positive, job.lead_screw_pitch_mm);
+    reader.number_into("lead_screw_pitch_mm", Need::required, Sign::positive, job.lead_screw_pitch_mm);
     if (const std::optional<int> heads = reader.integer("heads", Need::required, Sign::positive)) job.heads = *heads;
-    read_number(reader, "lines_per_length", Need::required, Sign::positive, job.lines_per_length);
-    read_number(reader, "feed_screw_rpm", Need::required, Sign::positive, job.feed_screw_rpm);
+    reader.number_into("lines_per_length", Need::required, Sign::positive, job.lines_per_length);
+    reader.number_into("feed_screw_rpm", Need::required, Sign::positive, job.feed_screw_rpm);
     job.feed_screw_rpm_at = sink.at(reader.region_of("feed_screw_rpm"));
-    read_number(reader, "step_angle_deg", Need::optional, Sign::positive, job.step_angle_deg);
-    read_number(reader, "gear_ratio", Need::optional, Sign::positive, job.gear_ratio);
-    read_number(reader, "timer_clock_hz", Need::optional, Sign::positive, job.timer_clock_hz);
+    reader.number_into("step_angle_deg", Need::optional, Sign::positive, job.step_angle_deg);
+    reader.number_into("gear_ratio", Need::optional, Sign::positive, job.gear_ratio);
+    reader.number_into("timer_clock_hz", Need::optional, Sign::positive, job.timer_clock_hz);
     job.timer_clock_at = sink.at(reader.region_of("timer_clock_hz"));
     if (const std::optional<int> divisor = reader.integer("timer_max_divisor", Need::optional, Sign::positive)) {
         if (*divisor < 2 || *divisor > 65536) {
@@ -54,7 +50,7 @@ void read_crosshatch(const toml::table& table, CrosshatchJob& job, ConfigSink& s
         }
     }
     job.index_deg = -1;
-    read_number(reader, "index_deg", Need::optional, Sign::non_negative, job.index_deg);
+    reader.number_into("index_deg", Need::optional, Sign::non_negative, job.index_deg);
     if (job.index_deg > 360) {
         sink.error(reader.region_of("index_deg"), "config-value",
                    fmt::format("'index_deg' must be 0 to 360, not {}", job.index_deg));
@@ -62,7 +58,7 @@ void read_crosshatch(const toml::table& table, CrosshatchJob& job, ConfigSink& s
     if (const std::optional<int> cycles = reader.integer("cycles", Need::optional, Sign::positive)) {
         job.cycles = *cycles;
     }
-    read_number(reader, "index_rpm", Need::optional, Sign::positive, job.index_rpm);
+    reader.number_into("index_rpm", Need::optional, Sign::positive, job.index_rpm);
     job.index_rpm_at = sink.at(reader.region_of("index_rpm"));
     if (const std::optional<std::size_t> timing =
             reader.choice("timing", Need::optional, "timing", {"one_time_base", "free_running_timers"})) {

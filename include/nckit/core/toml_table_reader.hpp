@@ -51,6 +51,12 @@ public:
     const toml::node* node(std::string_view key, Need need);
 
     std::optional<double> number(std::string_view key, Need need, Sign sign = Sign::any);
+    //! number(), stored into `out` when present and valid (out keeps its default otherwise).
+    bool number_into(std::string_view key, Need need, Sign sign, double& out) {
+        const std::optional<double> value = number(key, need, sign);
+        if (value) out = *value;
+        return value.has_value();
+    }
     std::optional<int> integer(std::string_view key, Need need, Sign sign = Sign::any);
     std::optional<std::string> text(std::string_view key, Need need);
     std::optional<bool> flag(std::string_view key, Need need);
