@@ -18,15 +18,6 @@ double norm_of(const AxisVector& d, std::size_t first, std::size_t last) {
     return std::sqrt(sum);
 }
 
-//! The length of a displacement: XYZ, else UVW, else ABC (LinuxCNC's rule).
-double measured_length(const AxisVector& d) {
-    const double xyz = norm_of(d, 0, 3);
-    if (xyz > 0) return xyz;
-    const double uvw = norm_of(d, 6, 9);
-    if (uvw > 0) return uvw;
-    return norm_of(d, 3, 6);
-}
-
 struct PlaneIndex {
     std::size_t first, second, normal;
 };
@@ -41,6 +32,14 @@ PlaneIndex plane_index(Plane plane) {
 }
 
 }  // namespace
+
+double measured_length(const AxisVector& d) {
+    const double xyz = norm_of(d, 0, 3);
+    if (xyz > 0) return xyz;
+    const double uvw = norm_of(d, 6, 9);
+    if (uvw > 0) return uvw;
+    return norm_of(d, 3, 6);
+}
 
 AxisVector position_at(const PathSegment& g, double s) {
     AxisVector p;

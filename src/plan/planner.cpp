@@ -10,7 +10,7 @@
 
 #include "junction.hpp"
 #include "lookahead.hpp"
-#include "segment_limits.hpp"
+#include "nckit/plan/segment_limits.hpp"
 
 namespace nckit {
 
@@ -99,9 +99,9 @@ struct Planner::Impl {
                 auto blend = plan_detail::blend_lines(p.path, p.full_length, next.path, tolerance);
                 if (blend) {
                     p.path.length -= blend->trim_mm;
-                    const ProfileLimits limits = plan_detail::segment_limits(
+                    const ProfileLimits limits = segment_limits(
                         blend->arc, machine, std::min(p.feed_mm_s, next.feed_mm_s), kind,
-                        kind == ProfileKind::trapezoid ? plan_detail::trapezoid_blend_normal_share : 0.5);
+                        kind == ProfileKind::trapezoid ? trapezoid_blend_normal_share : 0.5);
                     const SourceLocation where = p.where;
                     const std::int64_t number = p.sequence_number;
                     release_pending(p.limits.max_velocity);
@@ -142,7 +142,7 @@ struct Planner::Impl {
         }
         if (!check_axes(path, move.where)) return;
         Pending next;
-        next.limits = plan_detail::segment_limits(path, machine, feed_mm_s, kind);
+        next.limits = segment_limits(path, machine, feed_mm_s, kind);
         next.full_length = path.length;
         next.path = std::move(path);
         next.feed_mm_s = feed_mm_s;
@@ -206,11 +206,11 @@ struct Planner::Impl {
             return;
         }
         if (!check_axes(path, move.where)) return;
-        const ProfileLimits limits = plan_detail::segment_limits(path, machine, speed_mm_s, kind);
+        const ProfileLimits limits = segment_limits(path, machine, speed_mm_s, kind);
         // The axes must keep up with the spindle's fastest moment, not only its mean.
         const double peak_mm_s = sync.feed.mm_per_rev * std::abs(rpm) * (1.0 + r) / 60.0;
         const ProfileLimits axis_limits =
-            plan_detail::segment_limits(path, machine, std::numeric_limits<double>::infinity(), kind);
+            segment_limits(path, machine, std::numeric_limits<double>::infinity(), kind);
         if (peak_mm_s > axis_limits.max_velocity * (1.0 + 1e-9)) {
             diagnostics.push_back(error_at(
                 move.where, "sync-too-fast",

@@ -1,10 +1,10 @@
-#include "segment_limits.hpp"
+#include "nckit/plan/segment_limits.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-namespace nckit::plan_detail {
+namespace nckit {
 
 ProfileLimits segment_limits(const PathSegment& segment, const MachineConfig& machine, double feed_mm_s,
                              ProfileKind kind, double normal_share) {
@@ -66,4 +66,4 @@ ProfileLimits segment_limits(const PathSegment& segment, const MachineConfig& ma
     return out;
 }
 
-}  // namespace nckit::plan_detail
+}  // namespace nckit

@@ -20,37 +20,6 @@ AxisVector scaled(const AxisVector& a, double k) {
     return out;
 }
 
-double measured_length(const AxisVector& from, const AxisVector& to) {
-    const AxisVector d = to - from;
-    auto norm3 = [&](Axis a, Axis b, Axis c) { return std::sqrt(d[a] * d[a] + d[b] * d[b] + d[c] * d[c]); };
-    for (double length : {norm3(Axis::X, Axis::Y, Axis::Z), norm3(Axis::U, Axis::V, Axis::W),
-                          norm3(Axis::A, Axis::B, Axis::C)}) {
-        if (length > 0) return length;
-    }
-    return 0;
-}
-
-ProfileLimits line_limits(const AxisVector& from, const AxisVector& to, const MachineConfig& machine,
-                          double feed_mm_s, ProfileKind kind) {
-    constexpr double inf = std::numeric_limits<double>::infinity();
-    const double length = measured_length(from, to);
-    double v = feed_mm_s;
-    double a = inf;
-    double j = inf;
-    for (const AxisConfig& axis : machine.axes) {
-        const double d1 = length > 0 ? std::abs(to[axis.axis] - from[axis.axis]) / length : 0.0;
-        if (!(d1 > 0)) continue;
-        v = std::min(v, axis.max_velocity / d1);
-        a = std::min(a, axis.max_acceleration / d1);
-        if (kind == ProfileKind::scurve) j = std::min(j, axis.max_jerk / d1);
-    }
-    ProfileLimits out;
-    out.max_velocity = std::isfinite(v) ? v : 0.0;
-    out.max_acceleration = a;
-    out.max_jerk = kind == ProfileKind::scurve ? j : inf;
-    return out;
-}
-
 std::optional<Ends> motion_ends(const Move& move) {
     if (const auto* line = std::get_if<Line>(&move.what)) return Ends{line->from, line->to};
     if (const auto* arc = std::get_if<Arc>(&move.what)) return Ends{arc->from, arc->to};

@@ -1,24 +1,20 @@
 #pragma once
-// Geometry the notch rewrite needs: limits along a straight cut (as the planner derives them),
-// move paths as polylines, and the distance between two segments.
+// Geometry the notch rewrite needs: move paths as polylines and the distance between two
+// segments.
 #include <optional>
 #include <vector>
 
 #include "nckit/core/machine.hpp"
 #include "nckit/interp/move.hpp"
+#include "nckit/plan/path_segment.hpp"
 #include "nckit/plan/profile.hpp"
 
 namespace nckit::notch_detail {
 
 //! Path length of a straight move as the planner measures it: XYZ, else UVW, else ABC.
-[[nodiscard]] double measured_length(const AxisVector& from, const AxisVector& to);
-
-//! Limits along a straight move from `from` to `to` at feed_mm_s. A replica of the planner's
-//! segment_limits (src/plan/segment_limits.cpp, private to plan) for a straight line, where
-//! |dq_i/ds| = |Δq_i| / length and every higher derivative is 0: v = min(F, vmax_i/|u_i|),
-//! a = min(amax_i/|u_i|), j = min(jmax_i/|u_i|) (j infinite for trapezoids).
-[[nodiscard]] ProfileLimits line_limits(const AxisVector& from, const AxisVector& to, const MachineConfig& machine,
-                                        double feed_mm_s, ProfileKind kind);
+[[nodiscard]] inline double measured_length(const AxisVector& from, const AxisVector& to) {
+    return nckit::measured_length(to - from);
+}
 
 //! The motion's path as points joined by straight chords, every chord within tolerance_mm of
 //! an arc; empty for moves that are not motions.

@@ -8,6 +8,7 @@
 #include "nckit/process/notch.hpp"
 #include "nckit/plan/profile.hpp"
 #include "notch_geometry.hpp"
+#include "nckit/plan/segment_limits.hpp"
 
 namespace nckit {
 
@@ -185,7 +186,7 @@ private:
         info.length_mm = notch_detail::measured_length(line.from, line.to);
         info.feed_mm_min = line.feed.mm_per_min;
         const ProfileKind kind = machine_.profile;
-        const ProfileLimits limits = notch_detail::line_limits(line.from, line.to, machine_, line.feed.mm_per_min / 60.0, kind);
+        const ProfileLimits limits = segment_limits(make_line(line.from, line.to), machine_, line.feed.mm_per_min / 60.0, kind);
         info.cut_speed_mm_min = limits.max_velocity * 60.0;
         info.run_up_mm = speed_change_distance(0.0, limits.max_velocity, limits, kind);
         info.run_up_placed_mm = round_up_to_grid(info.run_up_mm);

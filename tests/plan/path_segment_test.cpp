@@ -5,7 +5,7 @@
 #include <numbers>
 
 #include "../../src/plan/junction.hpp"
-#include "../../src/plan/segment_limits.hpp"
+#include "nckit/plan/segment_limits.hpp"
 #include <random>
 #include "nckit/plan/path_segment.hpp"
 
@@ -236,8 +236,8 @@ TEST(PathSegment, GentleBlendKeepsNearlyTheWholeAcceleration) {
         axis.max_jerk = 50000;
     }
     for (ProfileKind kind : {ProfileKind::trapezoid, ProfileKind::scurve}) {
-        const ProfileLimits l = plan_detail::segment_limits(blend->arc, m, 50, kind);
-        const ProfileLimits line = plan_detail::segment_limits(a, m, 50, kind);
+        const ProfileLimits l = segment_limits(blend->arc, m, 50, kind);
+        const ProfileLimits line = segment_limits(a, m, 50, kind);
         EXPECT_NEAR(l.max_velocity, 50, 1e-9);
         // (500 − d2·50²)/d1: within a few percent of the line's 500/|rate_x|, not half of it.
         EXPECT_GT(l.max_acceleration, 0.95 * line.max_acceleration) << static_cast<int>(kind);
@@ -265,8 +265,8 @@ TEST(SegmentLimits, BudgetHoldsAndBeatsFixedShares) {
         const DerivativeBounds b = derivative_bounds(g);
         const double feed = std::pow(10.0, 0.5 + 2.5 * unit(random));
         for (ProfileKind kind : {ProfileKind::trapezoid, ProfileKind::scurve}) {
-            for (double share : {0.5, plan_detail::trapezoid_blend_normal_share}) {
-                const ProfileLimits l = plan_detail::segment_limits(g, m, feed, kind, share);
+            for (double share : {0.5, trapezoid_blend_normal_share}) {
+                const ProfileLimits l = segment_limits(g, m, feed, kind, share);
                 ASSERT_GT(l.max_velocity, 0);
                 ASSERT_GT(l.max_acceleration, 0);
                 EXPECT_LE(l.max_velocity * b.speed_factor, feed * (1 + 1e-12));

@@ -53,6 +53,9 @@ struct DerivativeBounds {
 };
 [[nodiscard]] DerivativeBounds derivative_bounds(const PathSegment& segment);
 
+//! The path length of a displacement: XYZ, else UVW, else ABC in degrees (LinuxCNC's rule).
+[[nodiscard]] double measured_length(const AxisVector& displacement);
+
 //! A straight line; length 0 (and a zero rate) when the points coincide.
 [[nodiscard]] PathSegment make_line(const AxisVector& from, const AxisVector& to);
 
