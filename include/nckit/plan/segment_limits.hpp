@@ -1,10 +1,11 @@
 #pragma once
-// Limits along a path segment that provably keep every axis within its machine limits.
+// Limits along a path segment that provably keep every axis within its machine limits: what the
+// planner gives each segment, and what a process generator needs to predict the planner.
 #include "nckit/core/machine.hpp"
 #include "nckit/plan/path_segment.hpp"
 #include "nckit/plan/profile.hpp"
 
-namespace nckit::plan_detail {
+namespace nckit {
 
 //! The most of an axis's acceleration the curvature term d2·v² may take (the rest, at least a
 //! tenth, is left to the path acceleration, so a > 0 on every segment).
@@ -33,4 +34,4 @@ inline constexpr double trapezoid_blend_normal_share = 0.9;
 [[nodiscard]] ProfileLimits segment_limits(const PathSegment& segment, const MachineConfig& machine,
                                            double feed_mm_s, ProfileKind kind, double normal_share = 0.5);
 
-}  // namespace nckit::plan_detail
+}  // namespace nckit
