@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "nckit/process/fts_spindle.hpp"
+#include "nckit/plan/spindle_model.hpp"
 
 namespace nckit {
 
@@ -15,12 +16,19 @@ SpindleClock::SpindleClock(double rpm, int counts_per_turn, const SpindleRipple&
         throw std::invalid_argument("spindle clock needs rpm > 0, counts >= 1, ripple below 100 %");
     }
     nominal_period_s_ = 60.0 / (rpm * counts_per_turn);
-    synchronous_speed_.resize(static_cast<std::size_t>(counts_per_turn));
-    const double phase = ripple.phase_deg * std::numbers::pi / 180.0;
+    synchronous_speed_.assign(static_cast<std::size_t>(counts_per_turn), 1.0);
+    if (ripple.fraction == 0.0) return;
+    // The synchronous ripple is the spindle model's (plan/spindle_model.hpp): each count takes
+    // exactly the time the model turns through it, expressed as a mean speed over the count.
+    SpindleConfig config;
+    config.ripple_fraction = ripple.fraction;
+    config.ripple_per_turn = ripple.per_turn;
+    config.ripple_phase_deg = ripple.phase_deg;
+    SpindleModel spindle(config);
+    spindle.set_speed(0.0, rpm);
     for (int count = 0; count < counts_per_turn; ++count) {
-        const double middle = 2.0 * std::numbers::pi * (count + 0.5) / counts_per_turn;
-        synchronous_speed_[static_cast<std::size_t>(count)] =
-            1.0 + ripple.fraction * std::sin(ripple.per_turn * middle + phase);
+        const double period_s = spindle.travel_time_s(angle_deg(count), angle_deg(count + 1));
+        synchronous_speed_[static_cast<std::size_t>(count)] = nominal_period_s_ / period_s;
     }
 }
 

@@ -36,11 +36,11 @@ public:
     //! rpm averaged over a turn: the ripple slows a turn by 1/sqrt(1 − r²).
     [[nodiscard]] double mean_rpm() const;
     [[nodiscard]] const SpindleConfig& config() const { return config_; }
-
-private:
-    //! s to turn from `from_deg` to `to_deg` (to >= from, forward sense) at the current speed.
+    //! s to turn from `from_deg` to `to_deg` (angles in the turning sense: −θ under M4,
+    //! to >= from) at the current speed, exactly. The spindle must be turning.
     [[nodiscard]] double travel_time_s(double from_deg, double to_deg) const;
 
+private:
     SpindleConfig config_;
     double rpm_ = 0;
     double since_s_ = 0;          //!< time of the last speed change

@@ -27,9 +27,10 @@ public:
     //! spindle (fraction + slow_fraction >= 1): jobs are checked before a clock is built.
     SpindleClock(double rpm, int counts_per_turn, const SpindleRipple& ripple);
 
-    //! s from count `count` (0 .. counts - 1) to the next, starting at time `t_s`: one count's
-    //! angle over the speed at the middle of the count. Without the slow component this depends
-    //! on the count alone, bit for bit, every turn.
+    //! s from count `count` (0 .. counts - 1) to the next, starting at time `t_s`: the time the
+    //! spindle model (plan/spindle_model.hpp) takes through the count, exactly, shortened by the
+    //! slow component at t_s. Without the slow component this depends on the count alone, bit
+    //! for bit, every turn.
     [[nodiscard]] double tick_period_s(int count, double t_s) const;
     //! s per count at the nominal speed: the controller's own idea of its period.
     [[nodiscard]] double nominal_period_s() const { return nominal_period_s_; }
@@ -41,7 +42,7 @@ private:
     int counts_ = 0;
     double nominal_period_s_ = 0.0;
     SpindleRipple ripple_;
-    std::vector<double> synchronous_speed_;  //!< 1 + fraction sin(...) at each count's middle
+    std::vector<double> synchronous_speed_;  //!< each count's mean speed over the nominal, from the exact period
 };
 
 }  // namespace nckit
