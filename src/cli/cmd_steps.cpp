@@ -4,7 +4,9 @@
 //   bytes 0-7  int64  time, ns from the trajectory start
 //   byte  8    uint8  axis index, in the machine file's axis order
 //   byte  9    int8   direction, +1 or -1
-// --text: one step a line, "t_ns axis dir".
+// --text: one step a line, "t_ns axis dir"; for an axis with a phase table (`phase_table`) a
+//   fourth column, "0x0B", the byte its port holds after the step (`port_active_low`,
+//   `port_set_bits`), from the motor's absolute count, backlash steps included.
 // --compress US: text commands for step-compressing firmware, per axis in time order:
 //   "set_next_step_dir AXIS DIR" before each change of direction, and
 //   "queue_step AXIS INTERVAL_NS COUNT ADD_NS" (Klipper's queue_step, in ns), every step within
@@ -12,6 +14,7 @@
 // A bad program writes nothing: the output goes to OUT.partial and is renamed at the end (to
 // stdout, when no -o is given, only after the whole program has been generated).
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -20,6 +23,8 @@
 
 #include "common.hpp"
 #include "partial_file.hpp"
+#include "step_record.hpp"
+#include "nckit/drive/phase_table.hpp"
 #include "nckit/drive/step_compress.hpp"
 #include "nckit/drive/step_generator.hpp"
 #include "nckit/plan/planner.hpp"
@@ -56,15 +61,6 @@ private:
     std::string buffer_;
 };
 
-void append_record(std::string& out, const StepEvent& e) {
-    auto t = static_cast<std::uint64_t>(e.t_ns);
-    char bytes[10];
-    for (int i = 0; i < 8; ++i) bytes[i] = static_cast<char>((t >> (8 * i)) & 0xFF);
-    bytes[8] = static_cast<char>(e.axis);
-    bytes[9] = static_cast<char>(e.direction);
-    out.append(bytes, sizeof bytes);
-}
-
 // Per axis: the steps of the current direction, compressed when it changes or at the end.
 struct AxisCompressor {
     int direction = 0;
@@ -99,6 +95,8 @@ int run_steps(const StepsOptions& options) {
     const bool compress = options.compress_us >= 0;
     const auto max_error_ns = static_cast<std::int64_t>(options.compress_us * 1000.0);
     std::vector<AxisCompressor> compressors(machine.axes.size());
+    // Phase-table axes' windings, started at the beat of their first position on the first step.
+    std::vector<std::optional<drive::PhaseSequencer>> phases(machine.axes.size());
     std::int64_t events = 0;
     std::int64_t runs = 0;
 
@@ -115,9 +113,18 @@ int run_steps(const StepsOptions& options) {
             }
             c.times.push_back(e.t_ns);
         } else if (options.text) {
-            out.buffer() += fmt::format("{} {} {}\n", e.t_ns, e.axis, e.direction);
+            const AxisConfig& axis = machine.axes[e.axis];
+            if (axis.phase_table == PhaseTableKind::none) {
+                out.buffer() += fmt::format("{} {} {}\n", e.t_ns, e.axis, e.direction);
+            } else {
+                std::optional<drive::PhaseSequencer>& phase = phases[e.axis];
+                if (!phase) phase.emplace(axis.phase_table, drive::port_encoding(axis), steps.start_count(e.axis));
+                const std::uint8_t port =
+                    phase->step(e.direction > 0 ? drive::Direction::forward : drive::Direction::reverse);
+                out.buffer() += fmt::format("{} {} {} 0x{:02X}\n", e.t_ns, e.axis, e.direction, port);
+            }
         } else {
-            append_record(out.buffer(), e);
+            append_step_record(out.buffer(), e);
         }
         out.maybe_flush();
     };
@@ -175,7 +182,7 @@ void add_steps_verb(CLI::App& app, int& exit_status) {
     verb->add_option("FILE", options->program, "NC program")->required();
     add_machine_options(*verb, options->machine);
     verb->add_option("-o,--output", options->output, "output file (default: stdout)");
-    verb->add_flag("--text", options->text, "one step a line: t_ns axis dir");
+    verb->add_flag("--text", options->text, "one step a line: t_ns axis dir, and the port byte on phase-table axes");
     auto* compress = verb->add_option("--compress", options->compress_text,
                                       "write queue_step runs with this maximum timing error, us (default 25)")
                          ->expected(0, 1);

@@ -11,5 +11,6 @@ void add_plan_verb(CLI::App& app, int& exit_status);
 void add_steps_verb(CLI::App& app, int& exit_status);
 void add_notch_verb(CLI::App& app, int& exit_status);
 void add_crosshatch_verb(CLI::App& app, int& exit_status);
+void add_servo_verb(CLI::App& app, int& exit_status);
 
 }  // namespace nckit::cli

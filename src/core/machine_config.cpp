@@ -129,6 +129,68 @@ void read_travel(TableReader& reader, AxisConfig& axis, ConfigSink& sink) {
     }
 }
 
+//! The winding bits a phase table drives (winding A the highest): what port_set_bits must leave
+//! clear. Spelt here because core cannot ask the drive stage.
+std::uint8_t winding_mask(PhaseTableKind kind) {
+    switch (kind) {
+    case PhaseTableKind::none: return 0;
+    case PhaseTableKind::three_phase_six_beat:
+    case PhaseTableKind::three_phase_three_beat: return 0x07;
+    case PhaseTableKind::two_phase_full_step:
+    case PhaseTableKind::two_phase_half_step: return 0x0F;
+    }
+    return 0;
+}
+
+//! How the phase table's pattern becomes the port byte; only meaningful beside a phase_table.
+void read_port(TableReader& reader, AxisConfig& axis, ConfigSink& sink) {
+    for (std::string_view key : {"port_active_low", "port_set_bits"}) {
+        if (reader.has(key) && axis.phase_table == PhaseTableKind::none) {
+            sink.error(reader.region_of(key), "config-value",
+                       fmt::format("'{}' encodes a phase table's port: set 'phase_table' too", key));
+        }
+    }
+    if (std::optional<bool> low = reader.flag("port_active_low", Need::optional)) axis.port_active_low = *low;
+    const std::optional<int> bits = reader.integer("port_set_bits", Need::optional, Sign::non_negative);
+    if (!bits) return;
+    if (*bits > 0xFF) {
+        sink.error(reader.region_of("port_set_bits"), "config-value",
+                   fmt::format("'port_set_bits' must fit the 8-bit port (0 to 255), not {}", *bits));
+        return;
+    }
+    const std::uint8_t mask = winding_mask(axis.phase_table);
+    if ((*bits & mask) != 0) {
+        // A bit held high on a winding line would energise (or, active low, free) that winding.
+        sink.error(reader.region_of("port_set_bits"), "config-value",
+                   fmt::format("'port_set_bits' (0x{:02X}) overlaps the winding bits 0x{:02X} of phase table '{}'",
+                               *bits, mask, phase_table_names[static_cast<std::size_t>(axis.phase_table)]));
+        return;
+    }
+    axis.port_set_bits = static_cast<std::uint8_t>(*bits);
+}
+
+//! [axis.servo]: the axis is a servo whose position loop is the second-order model.
+void read_servo(TableReader& axis_reader, AxisConfig& axis, ConfigSink& sink) {
+    const toml::node* node = axis_reader.node("servo", Need::optional);
+    if (node == nullptr) return;
+    const toml::table* table = node->as_table();
+    if (table == nullptr) {
+        sink.error(node->source(), "config-type",
+                   fmt::format("'servo' must be a table ([axis.servo] after its [[axis]]), not {}",
+                               detail::type_name(node->type())));
+        return;
+    }
+    TableReader reader(*table, "[axis.servo]", sink);
+    AxisServoConfig servo;
+    const bool have_frequency =
+        read_into(reader, "natural_frequency_hz", Need::required, Sign::positive, servo.natural_frequency_hz);
+    const bool have_damping = read_into(reader, "damping", Need::required, Sign::non_negative, servo.damping);
+    // A gain of 0 would make an axis that never moves; a negative one one that runs away.
+    const bool gain_ok = !reader.has("gain") || read_into(reader, "gain", Need::optional, Sign::positive, servo.gain);
+    reader.reject_unknown_keys();
+    if (have_frequency && have_damping && gain_ok) axis.servo = servo;
+}
+
 AxisEntry read_axis(const toml::table& table, ConfigSink& sink) {
     const std::size_t errors_before = sink.diagnostics.size();
     TableReader reader(table, "[[axis]]", sink);
@@ -152,6 +214,8 @@ AxisEntry read_axis(const toml::table& table, ConfigSink& sink) {
                                 phase_table_names[3], phase_table_names[4]})) {
         entry.config.phase_table = static_cast<PhaseTableKind>(*i);
     }
+    read_port(reader, entry.config, sink);
+    read_servo(reader, entry.config, sink);
     reader.reject_unknown_keys();
     entry.valid = sink.diagnostics.size() == errors_before;
     return entry;

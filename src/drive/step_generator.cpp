@@ -5,194 +5,40 @@
 
 #include <algorithm>
 #include <cmath>
-#include <iterator>
+#include <cstdlib>
 #include <limits>
-#include <numbers>
+
+#include "arc_crossing.hpp"
+#include "profile_clock.hpp"
 
 namespace nckit {
 
+using drive_detail::ArcAxisCrossings;
+using drive_detail::PhaseSolver;
+using drive_detail::ProfileClock;
+
 namespace {
+
 // ns from s, for t >= 0 (rounded half up, as llround would for these values).
 std::int64_t to_ns(double t_s) { return static_cast<std::int64_t>(t_s * 1e9 + 0.5); }
+
 }  // namespace
 
 std::int64_t commanded_count(double position, double steps_per_unit) {
     return static_cast<std::int64_t>(std::floor(position * steps_per_unit + 0.5));
 }
 
-namespace {
-
-// The profile of one piece, inverted: the time at which it reaches a position. Queries come with
-// non-decreasing positions, so the walker only moves forwards through the phases.
-class ProfileInverse {
-public:
-    explicit ProfileInverse(const Profile& profile) : profile_(profile) { enter(0, 0, 0, profile.start_velocity); }
-
-    //! s of profile time at which the profile (relative to its start) reaches p.
-    double time_at(double p) {
-        while (phase_ + 1 < profile_.phase_count && p > end_p_) {
-            const ProfilePhase& ph = profile_.phases[static_cast<std::size_t>(phase_)];
-            const double tau = ph.duration_s;
-            enter(phase_ + 1, start_s_ + tau, end_p_, v_ + tau * (a_ + 0.5 * tau * j_));
-        }
-        if (profile_.phase_count == 0) return 0;
-        if (p <= p_) return start_s_;  // at (or, by rounding, before) the phase start
-        if (p >= end_p_) return start_s_ + duration_;
-        if (j_ == 0 && a_ == 0) {  // cruise: linear
-            const double x = std::clamp((p - p_) * inv_v_, 0.0, duration_);
-            remember(x);
-            return start_s_ + x;
-        }
-        // Newton on the monotone cubic, kept inside a shrinking bracket (bisection fallback),
-        // from a second-order Taylor step off the last root (steps come close together, so
-        // the first Newton step is usually already below the tolerance).
-        double lo = 0;
-        double hi = duration_;
-        double x = guess_ + last_gap_;
-        if (have_root_) {
-            const double v = v_ + guess_ * (a_ + 0.5 * guess_ * j_);
-            if (v > 0) {
-                const double a = a_ + guess_ * j_;
-                const double inv_v = 1.0 / v;
-                const double d = (p - last_p_) * inv_v;
-                x = guess_ + d - 0.5 * a * d * d * inv_v;
-            }
-        }
-        x = std::clamp(x, lo, hi);
-        for (int iteration = 0; iteration < 100; ++iteration) {
-            const double f = p_ + x * (v_ + x * (half_a_ + x * sixth_j_)) - p;
-            if (f < 0) {
-                lo = x;
-            } else if (f > 0) {
-                hi = x;
-            } else {
-                break;
-            }
-            const double slope = v_ + x * (a_ + 0.5 * x * j_);
-            double next = slope > 0 ? x - f / slope : lo + 0.5 * (hi - lo);
-            if (!(next >= lo && next <= hi)) next = lo + 0.5 * (hi - lo);
-            const double step = std::abs(next - x);
-            x = next;
-            // A Newton step this small leaves an error of the order of its square: done.
-            if (step < 1e-10 || hi - lo < 1e-12) break;
-        }
-        remember(x);
-        have_root_ = true;
-        last_p_ = p;
-        return start_s_ + x;
-    }
-
-private:
-    void remember(double x) {
-        last_gap_ = x - guess_;
-        guess_ = x;
-    }
-
-    void enter(int phase, double start_s, double p, double v) {
-        phase_ = phase;
-        start_s_ = start_s;
-        p_ = p;
-        v_ = v;
-        guess_ = 0;
-        last_gap_ = 0;
-        have_root_ = false;
-        if (phase >= profile_.phase_count) return;
-        const ProfilePhase& ph = profile_.phases[static_cast<std::size_t>(phase)];
-        a_ = ph.acceleration;
-        j_ = ph.jerk;
-        duration_ = ph.duration_s;
-        inv_v_ = v > 0 ? 1.0 / v : 0.0;
-        half_a_ = 0.5 * a_;
-        sixth_j_ = j_ / 6.0;
-        end_p_ = phase + 1 == profile_.phase_count
-                     ? profile_.distance
-                     : p + duration_ * (v + duration_ * (0.5 * a_ + duration_ * j_ / 6.0));
-    }
-
-    const Profile& profile_;
-    int phase_ = 0;
-    double start_s_ = 0;   // s, profile time at the phase start
-    double duration_ = 0;  // s
-    double p_ = 0, v_ = 0, a_ = 0, j_ = 0;  // state at the phase start (p relative to the profile)
-    double end_p_ = 0;     // mm at the phase end
-    double inv_v_ = 0;     // s/mm at the phase start (cruise phases)
-    double half_a_ = 0, sixth_j_ = 0;  // the cubic's coefficients a/2, j/6
-    double guess_ = 0;     // s into the phase: the last root, a good start for the next
-    double last_gap_ = 0;  // s between the last two roots
-    bool have_root_ = false;  // guess_ is a root in this phase, at position last_p_
-    double last_p_ = 0;
+//! One interval of a piece on which an axis moves one way: [s_a, s_b] with x = q × spu going
+//! from x_a to x_b, rising (+1) or falling (-1).
+struct StepGenerator::Interval {
+    double s_a = 0;
+    double s_b = 0;
+    double x_a = 0;
+    double x_b = 0;
+    int rising = 1;
 };
 
-// Where dq/ds of one XYZ axis of an arc is zero, in (0, length), sorted.
-std::vector<double> arc_turning_points(const PathSegment& g, std::size_t i) {
-    std::vector<double> out;
-    const double k = g.angle_rate;
-    const double m = std::hypot(g.u[i], g.v[i]);
-    if (g.radius_mm <= 0 || k == 0 || m < 1e-15) return out;
-    // dq/ds = rate + R k (v cos θ − u sin θ) = rate + R k m cos(θ + φ), φ = atan2(u, v).
-    const double c = -g.rate[i] / (g.radius_mm * k * m);
-    if (!(std::abs(c) <= 1)) return out;
-    const double phi = std::atan2(g.u[i], g.v[i]);
-    const double alpha = std::acos(c);
-    const double theta_lo = std::min(0.0, k * g.length);
-    const double theta_hi = std::max(0.0, k * g.length);
-    constexpr double two_pi = 2 * std::numbers::pi;
-    for (double base : {alpha - phi, -alpha - phi}) {
-        double theta = base - two_pi * std::floor((base - theta_lo) / two_pi);
-        for (; theta < theta_hi; theta += two_pi) {
-            const double s = theta / k;
-            if (s > 0 && s < g.length) out.push_back(s);
-        }
-    }
-    std::sort(out.begin(), out.end());
-    return out;
-}
-
-// q_i(s) and dq_i/ds of one XYZ axis of an arc, as point_at computes them.
-struct AxisPoint {
-    double position = 0;
-    double d1 = 0;
-};
-AxisPoint arc_axis_at(const PathSegment& g, std::size_t i, double s) {
-    const double k = g.angle_rate;
-    const double theta = k * s;
-    const double c = std::cos(theta);
-    const double sn = std::sin(theta);
-    return {g.origin[i] + g.rate[i] * s + g.radius_mm * (c * g.u[i] + sn * g.v[i]),
-            g.rate[i] + g.radius_mm * k * (-sn * g.u[i] + c * g.v[i])};
-}
-
-// s in [lo, hi] where x(s) = spu·q_i(s) crosses `target`; x is monotone on the interval, rising
-// when direction > 0. Newton on the exact derivative from `guess`, safeguarded by bisection;
-// stops when a Newton step is below 1e-13 of the length scale, or the bracket is exhausted.
-double arc_crossing(const PathSegment& g, std::size_t i, double spu, double target, double lo, double hi,
-                    int direction, double guess) {
-    double x = std::clamp(guess, lo, hi);
-    const double scale = 1e-13 * std::max(1.0, g.length);
-    for (int iteration = 0; iteration < 200; ++iteration) {
-        const AxisPoint p = arc_axis_at(g, i, x);
-        const double f = direction * (p.position * spu - target);
-        if (f < 0) {
-            lo = x;
-        } else if (f > 0) {
-            hi = x;
-        } else {
-            return x;
-        }
-        const double slope = direction * p.d1 * spu;
-        double next = slope > 0 ? x - f / slope : lo + 0.5 * (hi - lo);
-        if (!(next > lo && next < hi)) next = lo + 0.5 * (hi - lo);
-        if (!(next > lo && next < hi)) return x;  // bracket down to adjacent doubles
-        const double step = std::abs(next - x);
-        x = next;
-        if (step <= scale) return x;
-    }
-    return x;
-}
-
-}  // namespace
-
-StepGenerator::StepGenerator(const MachineConfig& machine) {
+StepGenerator::StepGenerator(const MachineConfig& machine, StepSolver solver) : solver_(solver) {
     for (const AxisConfig& config : machine.axes) {
         AxisState state;
         state.axis = config.axis;
@@ -231,6 +77,64 @@ void StepGenerator::emit(AxisState& axis, std::uint8_t index, std::int64_t t_ns,
     axis.motor_last_ns = t;
 }
 
+// The steps of one axis over one interval: from its count to the count x_b implies. A step
+// whose boundary the interval crosses goes at the crossing (`crossing(boundary, lo)`, the s of
+// the boundary at or after lo); a step the interval does not explain (a rounding catch-up, or
+// a step back after an overshoot) goes at the interval start.
+template <class Crossing, class Clock>
+void StepGenerator::walk(AxisState& axis, std::uint8_t index, const Interval& in, Crossing&& crossing,
+                         Clock&& time_ns) {
+    const std::int64_t target = static_cast<std::int64_t>(std::floor(in.x_b + 0.5));
+    if (axis.count == target) return;
+    const int direction = target > axis.count ? 1 : -1;
+    const double half = 0.5 * direction;
+    const auto dir = static_cast<std::int8_t>(direction);
+    const bool crosses = direction == in.rising;
+    double last_s = in.s_a;
+    if (axis.catching_up || axis.backlash_steps > 0) {
+        while (axis.count != target) {
+            const double boundary = static_cast<double>(axis.count) + half;
+            double s = in.s_a;
+            if (crosses && (boundary - in.x_a) * in.rising > 0) {
+                s = (in.x_b - boundary) * in.rising <= 0 ? in.s_b : crossing(boundary, last_s);
+                last_s = s;
+            }
+            emit(axis, index, time_ns(s), direction);
+        }
+        return;
+    }
+    // The common case, without backlash bookkeeping: the loop keeps its state in registers.
+    std::vector<StepEvent>& queue = axis.queue;
+    queue.reserve(queue.size() + static_cast<std::size_t>(std::llabs(target - axis.count)));
+    std::int64_t count = axis.count;
+    std::int64_t t_ns = axis.motor_last_ns;
+    // In blocks: the crossings first, then their times, so the library calls of one loop (acos
+    // on arcs) overlap each other rather than wait behind the other's work.
+    constexpr std::int64_t block = 32;
+    double s_block[block];
+    while (count != target) {
+        const std::int64_t n = std::min<std::int64_t>(block, std::llabs(target - count));
+        for (std::int64_t k = 0; k < n; ++k) {
+            const double boundary = static_cast<double>(count + k * direction) + half;
+            double s = in.s_a;
+            if (crosses && (boundary - in.x_a) * in.rising > 0) {
+                s = (in.x_b - boundary) * in.rising <= 0 ? in.s_b : crossing(boundary, last_s);
+                last_s = s;
+            }
+            s_block[k] = s;
+        }
+        for (std::int64_t k = 0; k < n; ++k) {
+            t_ns = time_ns(s_block[k]);
+            queue.push_back({t_ns, index, dir, false});
+        }
+        count += n * direction;
+    }
+    axis.motor_count += count - axis.count;
+    axis.count = count;
+    axis.motor_last_ns = t_ns;
+    axis.last_direction = direction;
+}
+
 void StepGenerator::add(const TrajectoryPiece& piece) {
     const double piece_start = piece.start_time_s;
     const double piece_end = piece.start_time_s + piece.duration_s;
@@ -240,7 +144,7 @@ void StepGenerator::add(const TrajectoryPiece& piece) {
         const AxisVector at = start_point(g);
         for (AxisState& axis : axes_) {
             if (!axis.started) {
-                axis.count = axis.motor_count = nckit::commanded_count(at[axis.axis], axis.spu);
+                axis.count = axis.motor_count = axis.start_count = nckit::commanded_count(at[axis.axis], axis.spu);
                 axis.started = true;
             }
         }
@@ -249,15 +153,17 @@ void StepGenerator::add(const TrajectoryPiece& piece) {
         return;
     }
     const double offset_mm = piece.profile_offset_mm - piece.profile.start_position;
+    const PhaseSolver phase_solver = solver_ == StepSolver::fast ? PhaseSolver::closed_form : PhaseSolver::newton;
     for (std::size_t a = 0; a < axes_.size(); ++a) {
         AxisState& axis = axes_[a];
         const auto index = static_cast<std::uint8_t>(a);
         const std::size_t i = nckit::index(axis.axis);
         if (!axis.started) {
-            axis.count = axis.motor_count = nckit::commanded_count(start_point(g)[i], axis.spu);
+            axis.count = axis.motor_count = axis.start_count = nckit::commanded_count(start_point(g)[i], axis.spu);
             axis.started = true;
         }
-        const bool curved = g.radius_mm > 0 && i < 3;
+        // An axis off the circle (a helix's axis, UVW, ABC) moves linearly along the piece.
+        const bool curved = g.radius_mm > 0 && i < 3 && (g.u[i] != 0 || g.v[i] != 0);
         if (!curved && g.rate[i] == 0) {
             // The axis does not move along this piece; a rounding step between pieces goes at
             // the piece start.
@@ -266,58 +172,52 @@ void StepGenerator::add(const TrajectoryPiece& piece) {
             while (axis.count != target) emit(axis, index, t_ns, axis.count < target ? 1 : -1);
             continue;
         }
-        ProfileInverse inverse(piece.profile);
+        ProfileClock clock(piece.profile, phase_solver);
         auto time_ns = [&](double s) {
-            const double profile_t = inverse.time_at(s + offset_mm);
+            const double profile_t = clock.time_at(s + offset_mm);
             const double t = piece_start + (profile_t - piece.profile_offset_s);
             return to_ns(std::clamp(t, piece_start, piece_end));
         };
-        // Monotone intervals of q_i(s).
-        std::vector<double> cuts{0.0};
-        if (curved) {
-            for (double s : arc_turning_points(g, i)) cuts.push_back(s);
+        const double spu = axis.spu;
+        const double inv_spu = 1.0 / spu;
+        if (!curved) {
+            const double inv_rate = 1.0 / g.rate[i];
+            const Interval whole{0.0, g.length, position_at(g, 0.0)[i] * spu, position_at(g, g.length)[i] * spu,
+                                 g.rate[i] > 0 ? 1 : -1};
+            walk(axis, index, whole,
+                 [&](double boundary, double) {
+                     return std::clamp((boundary * inv_spu - g.origin[i]) * inv_rate, 0.0, g.length);
+                 },
+                 time_ns);
+            continue;
         }
+        // Monotone intervals of q_i(s), split at its turning points.
+        std::vector<double> cuts{0.0};
+        for (double s : drive_detail::arc_turning_points(g, i)) cuts.push_back(s);
         cuts.push_back(g.length);
-        const double inv_spu = 1.0 / axis.spu;
-        const double inv_rate = curved ? 0.0 : 1.0 / g.rate[i];
-        double x_a = position_at(g, 0.0)[i] * axis.spu;
-        double last_s = 0;    // the last crossing on this axis (arcs)
+        const bool closed_form = solver_ == StepSolver::fast && ArcAxisCrossings::applies(g, i);
+        ArcAxisCrossings arc = closed_form ? ArcAxisCrossings(g, i) : ArcAxisCrossings();
+        double x_a = position_at(g, 0.0)[i] * spu;
+        double last_s = 0;    // the last crossing on this axis
         double last_gap = 0;  // and the spacing before it: the next guess is last_s + last_gap
         for (std::size_t c = 0; c + 1 < cuts.size(); ++c) {
             const double s_a = cuts[c];
             const double s_b = cuts[c + 1];
-            const double x_b = position_at(g, s_b)[i] * axis.spu;
-            const std::int64_t target = static_cast<std::int64_t>(std::floor(x_b + 0.5));
-            const int direction = target > axis.count ? 1 : -1;
-            const int rising = curved ? (x_b >= x_a ? 1 : -1) : (g.rate[i] > 0 ? 1 : -1);
-            while (axis.count != target) {
-                const double boundary = static_cast<double>(axis.count) + 0.5 * direction;
-                double s = s_a;
-                if (direction == rising && (boundary - x_a) * rising > 0) {
-                    if ((x_b - boundary) * rising <= 0) {
-                        s = s_b;
-                    } else if (!curved) {
-                        s = std::clamp((boundary * inv_spu - g.origin[i]) * inv_rate, s_a, s_b);
-                    } else {
-                        const double lo = std::max(s_a, last_s);
-                        s = arc_crossing(g, i, axis.spu, boundary, lo, s_b, rising,
-                                         last_s > s_a ? last_s + last_gap : lo + 0.5 * (s_b - lo));
-                        last_gap = s - last_s;
-                        last_s = s;
-                    }
-                }
-                const std::int64_t t_ns = time_ns(s);
-                if (!axis.catching_up && axis.backlash_steps == 0) {
-                    // The common case, without backlash bookkeeping.
-                    axis.queue.push_back({t_ns, index, static_cast<std::int8_t>(direction), false});
-                    axis.count += direction;
-                    axis.motor_count += direction;
-                    axis.motor_last_ns = t_ns;
-                    axis.last_direction = direction;
-                } else {
-                    emit(axis, index, t_ns, direction);
-                }
-            }
+            const double x_b = position_at(g, s_b)[i] * spu;
+            const Interval interval{s_a, s_b, x_a, x_b, x_b >= x_a ? 1 : -1};
+            if (closed_form) arc.set_interval(s_a, s_b);
+            walk(axis, index, interval,
+                 [&](double boundary, double lo) {
+                     double s = closed_form ? arc.crossing(boundary * inv_spu, lo, s_b) : -1.0;
+                     if (s < 0) {
+                         const double guess = last_s > s_a ? last_s + last_gap : lo + 0.5 * (s_b - lo);
+                         s = drive_detail::arc_crossing_newton(g, i, spu, boundary, lo, s_b, interval.rising, guess);
+                     }
+                     last_gap = s - last_s;
+                     last_s = s;
+                     return s;
+                 },
+                 time_ns);
             x_a = x_b;
         }
     }
@@ -330,26 +230,53 @@ void StepGenerator::finish() {
     dirty_ = true;
 }
 
-// Moves every event before the horizon from the axis queues into ready_, merged in time order;
-// std::merge takes from its first range on ties, so merging in axis order keeps ties in axis
-// order.
+namespace {
+
+// Merges the time-ordered runs a and b into out, a's events first at equal times. The choice
+// is a conditional move, not a branch: steps of two axes interleave unpredictably.
+StepEvent* merge_runs(const StepEvent* a, const StepEvent* a_end, const StepEvent* b, const StepEvent* b_end,
+                      StepEvent* out) {
+    while (a != a_end && b != b_end) {
+        const bool take_b = b->t_ns < a->t_ns;
+        *out++ = *(take_b ? b : a);
+        b += take_b ? 1 : 0;
+        a += take_b ? 0 : 1;
+    }
+    out = std::copy(a, a_end, out);
+    return std::copy(b, b_end, out);
+}
+
+}  // namespace
+
+bool StepGenerator::refill() {
+    if (!dirty_) return false;
+    release();
+    dirty_ = false;
+    return ready_head_ < ready_.size();
+}
+
+// Moves every event before the horizon from the axis queues into ready_, merged in time order,
+// ties in axis order (the merge takes the lower axes first). Events released earlier are all
+// before the old horizon and new ones at or after it, so the new ones are appended.
 void StepGenerator::release() {
     const std::int64_t limit = finished_ ? std::numeric_limits<std::int64_t>::max() : horizon_ns_;
     ready_.erase(ready_.begin(), ready_.begin() + static_cast<std::ptrdiff_t>(ready_head_));
     ready_head_ = 0;
     auto before_limit = [limit](const StepEvent& e) { return e.t_ns < limit; };
+    const std::size_t old_size = ready_.size();
     for (AxisState& axis : axes_) {
         const auto begin = axis.queue.begin() + static_cast<std::ptrdiff_t>(axis.head);
         const auto end = std::partition_point(begin, axis.queue.end(), before_limit);
         if (begin == end) continue;
-        if (ready_.empty()) {
-            ready_.assign(begin, end);
+        const auto count = static_cast<std::size_t>(end - begin);
+        if (ready_.size() == old_size) {
+            ready_.insert(ready_.end(), begin, end);
         } else {
-            merged_.clear();
-            merged_.reserve(ready_.size() + static_cast<std::size_t>(end - begin));
-            std::merge(ready_.begin(), ready_.end(), begin, end, std::back_inserter(merged_),
-                       [](const StepEvent& a, const StepEvent& b) { return a.t_ns < b.t_ns; });
-            ready_.swap(merged_);
+            // Merge this axis into the run of the axes before it.
+            merged_.resize(ready_.size() - old_size + count);
+            merge_runs(ready_.data() + old_size, ready_.data() + ready_.size(), &*begin, &*end, merged_.data());
+            ready_.resize(old_size);
+            ready_.insert(ready_.end(), merged_.begin(), merged_.end());
         }
         axis.head = static_cast<std::size_t>(end - axis.queue.begin());
         if (axis.head == axis.queue.size()) {
@@ -360,21 +287,16 @@ void StepGenerator::release() {
             axis.head = 0;
         }
     }
-}
-
-bool StepGenerator::pop(StepEvent& event) {
-    if (ready_head_ == ready_.size()) {
-        if (!dirty_) return false;
-        release();
-        dirty_ = false;
-        if (ready_head_ == ready_.size()) return false;
+    // Kept for safety: should an earlier release have left an event after a new one, restore
+    // the order (stable, so ties stay in axis order).
+    if (old_size > 0 && ready_.size() > old_size && ready_[old_size].t_ns < ready_[old_size - 1].t_ns) {
+        std::inplace_merge(ready_.begin(), ready_.begin() + static_cast<std::ptrdiff_t>(old_size), ready_.end(),
+                           [](const StepEvent& x, const StepEvent& y) { return x.t_ns < y.t_ns; });
     }
-    event = ready_[ready_head_++];
-    return true;
 }
 
-std::vector<StepEvent> generate_steps(const Trajectory& trajectory, const MachineConfig& machine) {
-    StepGenerator generator(machine);
+std::vector<StepEvent> generate_steps(const Trajectory& trajectory, const MachineConfig& machine, StepSolver solver) {
+    StepGenerator generator(machine, solver);
     std::vector<StepEvent> out;
     StepEvent event;
     for (const TrajectoryPiece& piece : trajectory.pieces) {

@@ -71,6 +71,14 @@ with tempfile.TemporaryDirectory() as tmp:
             own_lines = f.read().splitlines()
         own = steps_per_axis(own_lines)
         assert planned == own, (planned, own)
+        # Same machine port bytes, step by step, on both routes (the seed's codes on each motor).
+        def port_sequences(lines):
+            sequences = {0: [], 1: []}
+            for line in lines:
+                fields = line.split()
+                sequences[int(fields[1])].append((fields[2], fields[3]))
+            return sequences
+        assert port_sequences(r.stdout.splitlines()) == port_sequences(own_lines)
         assert all(re.fullmatch(r"\d+ [01] -?1 0x[0-9A-F]{2}", line) for line in own_lines[:50])
         assert own[(0, -1)] == own[(0, 1)] == 21600 * heads
 

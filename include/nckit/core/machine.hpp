@@ -1,6 +1,8 @@
 #pragma once
 #include <array>
+#include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -34,6 +36,14 @@ enum class PhaseTableKind {
 inline constexpr std::array<std::string_view, 5> phase_table_names{
     "none", "3phase-6beat", "3phase-3beat", "2phase-full", "2phase-half"};
 
+//! A servo axis's closed position loop as the second-order model
+//! gain / (T^2 s^2 + 2 damping T s + 1), T = 1 / (2 pi natural_frequency_hz).
+struct AxisServoConfig {
+    double natural_frequency_hz = 0;  //!< Hz, the loop's undamped natural frequency
+    double damping = 0;               //!< zeta, dimensionless, >= 0
+    double gain = 1.0;                //!< position out per setpoint in (DC gain), dimensionless
+};
+
 struct AxisConfig {
     Axis axis = Axis::X;
     AxisKind kind = AxisKind::linear;
@@ -47,6 +57,9 @@ struct AxisConfig {
     double backlash_rate_steps_s = 20000;  //!< steps/s at which a reversal's backlash is taken up
     double home = 0;              //!< reference point G28 returns to, machine coordinates
     PhaseTableKind phase_table = PhaseTableKind::none;  //!< windings sequenced by the drive
+    bool port_active_low = false;    //!< phase-table port: winding bits inverted (sinking drivers)
+    std::uint8_t port_set_bits = 0;  //!< phase-table port: bits always written high (e.g. enable)
+    std::optional<AxisServoConfig> servo;  //!< a servo axis's position loop ([axis.servo]); none: open loop
 };
 
 struct SpindleConfig {

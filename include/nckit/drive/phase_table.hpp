@@ -26,6 +26,11 @@ struct PortEncoding {
 //! 0BH, 09H, 0DH, 0CH, 0EH, 0AH for the six beats A, AB, B, BC, C, CA (reference/steppers.md).
 inline constexpr PortEncoding seed_port_encoding{true, 0x08};
 
+//! The encoding an axis's config asks for (`port_active_low`, `port_set_bits`).
+[[nodiscard]] inline PortEncoding port_encoding(const AxisConfig& axis) {
+    return {axis.port_active_low, axis.port_set_bits};
+}
+
 //! The config spelling ("3phase-6beat", ...) of a table; see core's phase_table_names.
 [[nodiscard]] std::string_view name(PhaseTableKind kind);
 //! The table a config string names, or nullopt for an unknown name.

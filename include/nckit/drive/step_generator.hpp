@@ -9,6 +9,18 @@
 
 namespace nckit {
 
+//! How step crossings and their times are solved. Both give the same steps; their times agree
+//! to the ns except where an exact time lies within a rounding of a half ns.
+enum class StepSolver {
+    //! Closed forms: arcs by acos on each interval where the axis moves one way (Newton where a
+    //! radius-mismatch rate is too large for it), constant-acceleration phases by the quadratic
+    //! formula. No step waits for the one before it, so the processor overlaps them.
+    fast,
+    //! Bracketed Newton on the exact functions, the library's sine and cosine at every iterate:
+    //! the definition the fast forms are tested against.
+    reference
+};
+
 //! One motor step.
 struct StepEvent {
     std::int64_t t_ns = 0;     //!< ns from the trajectory start (the exact crossing time, rounded)
@@ -24,12 +36,13 @@ struct StepEvent {
 //! i.e. the count changes where q × spu crosses k + 0.5. Each piece is walked in its path
 //! parameter s (the profile is monotone in time): s is split where the axis's dq/ds changes sign
 //! (arcs: solved in closed form), each crossing s is found exactly (lines: closed form; arcs:
-//! Newton/bisection on q(s)), then mapped to time by inverting the piecewise-cubic profile
-//! (closed form in cruise; otherwise Newton/bisection per phase from a second-order Taylor guess,
-//! accepted once a Newton correction is below 0.1 ns, which leaves an error of the order of its
-//! square). Times are then rounded to whole ns. The count emitted so far is carried from piece
-//! to piece and every interval ends at the count its end position implies, so nothing
-//! accumulates: after every piece the count is exactly round(end position × spu).
+//! closed form on each monotone interval, see StepSolver), then mapped to time by inverting the
+//! piecewise-cubic profile (closed form in cruise and at constant acceleration; in jerk phases
+//! Newton/bisection from a second-order Taylor guess, accepted once a Newton correction is below
+//! 0.1 ns, which leaves an error of the order of its square). Times are then rounded to whole
+//! ns. The count emitted so far is carried from piece to piece and every interval ends at the
+//! count its end position implies, so nothing accumulates: after every piece the count is
+//! exactly round(end position × spu).
 //!
 //! Backlash: on a reversal of an axis, round(backlash × spu) extra steps in the new direction go
 //! out first, starting at the time of the first commanded step in that direction, one every
@@ -39,18 +52,25 @@ struct StepEvent {
 //! taken as having its play already taken up.
 class StepGenerator {
 public:
-    explicit StepGenerator(const MachineConfig& machine);
+    explicit StepGenerator(const MachineConfig& machine, StepSolver solver = StepSolver::fast);
 
     void add(const TrajectoryPiece& piece);
     //! No more pieces: every remaining event becomes available.
     void finish();
     //! The next event in time order, if one is ready.
-    bool pop(StepEvent& event);
+    bool pop(StepEvent& event) {
+        if (ready_head_ == ready_.size() && !refill()) return false;
+        event = ready_[ready_head_++];
+        return true;
+    }
 
     //! Commanded count of machine axis `axis` (index into machine.axes) after the pieces added.
     [[nodiscard]] std::int64_t commanded_count(std::size_t axis) const { return axes_[axis].count; }
     //! Motor count (commanded count plus the backlash steps issued).
     [[nodiscard]] std::int64_t motor_count(std::size_t axis) const { return axes_[axis].motor_count; }
+    //! Count axis `axis` started from, round(first position × spu) (0 before the first piece):
+    //! with the events popped so far, the motor count at any event (a phase table's beat).
+    [[nodiscard]] std::int64_t start_count(std::size_t axis) const { return axes_[axis].start_count; }
 
 private:
     struct AxisState {
@@ -60,6 +80,7 @@ private:
         std::int64_t backlash_interval_ns = 50000;
         std::int64_t count = 0;             //!< commanded count
         std::int64_t motor_count = 0;
+        std::int64_t start_count = 0;       //!< count at the first position
         int last_direction = 0;             //!< of the last commanded step, 0 before any
         std::int64_t motor_last_ns = 0;     //!< time of the last motor step
         bool catching_up = false;           //!< steps delayed behind a backlash take-up
@@ -67,9 +88,14 @@ private:
         std::vector<StepEvent> queue;       //!< events not yet popped, in time order
         std::size_t head = 0;
     };
+    struct Interval;
+    template <class Crossing, class Clock>
+    void walk(AxisState& axis, std::uint8_t index, const Interval& interval, Crossing&& crossing, Clock&& time_ns);
     void emit(AxisState& axis, std::uint8_t index, std::int64_t t_ns, int direction);
+    bool refill();  //!< releases what the horizon allows; false when nothing is ready
     void release();
 
+    StepSolver solver_;
     std::vector<AxisState> axes_;
     std::int64_t horizon_ns_ = 0;  //!< events before this are final
     bool finished_ = false;
@@ -80,7 +106,8 @@ private:
 };
 
 //! All the steps of a whole trajectory.
-[[nodiscard]] std::vector<StepEvent> generate_steps(const Trajectory& trajectory, const MachineConfig& machine);
+[[nodiscard]] std::vector<StepEvent> generate_steps(const Trajectory& trajectory, const MachineConfig& machine,
+                                                    StepSolver solver = StepSolver::fast);
 
 //! The commanded count for a position: round(position × spu), halves rounded up.
 [[nodiscard]] std::int64_t commanded_count(double position, double steps_per_unit);
