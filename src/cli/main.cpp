@@ -14,9 +14,11 @@ int main(int argc, char** argv) {
     nckit::cli::add_expand_verb(app, exit_status);
     nckit::cli::add_plan_verb(app, exit_status);
     nckit::cli::add_steps_verb(app, exit_status);
+    nckit::cli::add_servo_verb(app, exit_status);
     nckit::cli::add_notch_verb(app, exit_status);
     nckit::cli::add_crosshatch_verb(app, exit_status);
-    nckit::cli::add_servo_verb(app, exit_status);
+    nckit::cli::add_eccentric_verb(app, exit_status);
+    nckit::cli::add_piston_verb(app, exit_status);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

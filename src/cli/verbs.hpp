@@ -9,8 +9,10 @@ void add_check_verb(CLI::App& app, int& exit_status);
 void add_expand_verb(CLI::App& app, int& exit_status);
 void add_plan_verb(CLI::App& app, int& exit_status);
 void add_steps_verb(CLI::App& app, int& exit_status);
+void add_servo_verb(CLI::App& app, int& exit_status);
 void add_notch_verb(CLI::App& app, int& exit_status);
 void add_crosshatch_verb(CLI::App& app, int& exit_status);
-void add_servo_verb(CLI::App& app, int& exit_status);
+void add_eccentric_verb(CLI::App& app, int& exit_status);
+void add_piston_verb(CLI::App& app, int& exit_status);
 
 }  // namespace nckit::cli

@@ -1,0 +1,173 @@
+// nckit piston JOB.toml: oval piston turning on a fast tool servo. Builds the cam engine from the
+// drawing, cuts the piston in simulation three ways (no compensation, feedforward, feedforward
+// plus learning across revolutions) with the job's servo, model error and spindle ripple, and
+// reports the profile error of each; --cam-table, --trace and --svg write the cam, the learning
+// run's last turns tick by tick and the plots. A bad job writes nothing.
+#include <cmath>
+#include <filesystem>
+#include <optional>
+#include <sstream>
+#include <system_error>
+#include <utility>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "common.hpp"
+#include "partial_file.hpp"
+#include "nckit/process/piston.hpp"
+#include "nckit/process/piston_svg.hpp"
+#include "verbs.hpp"
+
+namespace nckit::cli {
+
+namespace {
+
+struct PistonOptions {
+    std::string job;
+    bool json = false;
+    std::string svg_dir;
+    std::string cam_table;
+    std::string trace;
+    int trace_turns = 3;
+};
+
+//! A JSON number, or null where there is none (a round section has no rpm limit).
+std::string number(double value) { return std::isfinite(value) ? fmt::format("{}", value) : "null"; }
+
+std::string run_json(const FtsRunResult& r) { return fmt::format(R"({{"pv":{},"rms":{}}})", r.pv_um, r.rms_um); }
+
+void print_json(const PistonSimulation& s) {
+    const FtsSimulation& f = s.fts;
+    const FtsParameters& p = s.parameters;
+    fmt::print(
+        "{{\"profile_error_um\":{{\"uncompensated\":{},\"feedforward\":{},\"learning\":{}}},"
+        "\"rpm\":{},\"encoder_counts\":{},\"tick_rate_hz\":{},\"dac_step_mm\":{},\"model_error\":{},"
+        "\"spindle_ripple\":{},\"servo\":{{\"natural_frequency_hz\":{},\"damping\":{},\"stroke_mm\":{},\"dac_bits\":{}}},"
+        "\"cam_table\":{{\"theta_cells\":{},\"z_cells\":{},\"cells\":{},\"bytes\":{},\"error_bound_mm\":{},"
+        "\"tolerance_mm\":{}}},"
+        "\"learning\":{{\"settled_turn\":{},\"settle_limit_um\":{},\"air_turns\":{},\"harmonics\":{},\"gain\":{},"
+        "\"contraction\":{},\"contraction_learned\":{}}},"
+        "\"servo_demand\":{{\"peak_displacement_mm\":{},\"displacement_limit_mm\":{},\"peak_displacement_theta_deg\":{},"
+        "\"peak_displacement_z_mm\":{},\"peak_command_mm\":{{\"uncompensated\":{},\"feedforward\":{},\"learning\":{}}},"
+        "\"acceleration_mm_s2\":{},\"acceleration_limit_mm_s2\":{},\"max_rpm\":{}}},"
+        "\"z_mm\":{{\"from\":{},\"to\":{}}},\"feed_mm_rev\":{},\"ticks\":{},\"cut_ticks\":{},\"duration_s\":{}}}\n",
+        run_json(f.uncompensated), run_json(f.feedforward), run_json(f.learning), p.rpm, p.encoder_counts,
+        f.tick_rate_hz, f.dac_step_mm, p.servo.model_error, p.ripple.fraction, p.servo.natural_frequency_hz,
+        p.servo.damping, p.servo.stroke_mm, p.servo.dac_bits, s.table_theta_cells, s.table_z_cells,
+        s.table_theta_cells * s.table_z_cells, s.table_bytes, s.table_error_bound_mm, s.table_tolerance_mm,
+        s.settled_turn, PistonRunOptions{}.settle_limit_um, p.air_turns, p.learning.harmonics, p.learning.gain,
+        f.learning_contraction.any_frequency, f.learning_contraction.learned_harmonics, s.fit.peak_displacement_mm,
+        s.fit.limit_mm, s.fit.theta_deg, s.fit.z_mm, f.uncompensated.peak_command_mm, f.feedforward.peak_command_mm,
+        f.learning.peak_command_mm, s.acceleration_mm_s2, s.acceleration_limit_mm_s2, number(s.max_rpm),
+        p.z_start_mm, p.z_end_mm, p.feed_mm_rev, f.ticks, f.cut_ticks, f.duration_s);
+}
+
+void print_text(const PistonSimulation& s, const PistonJobFile& file, const std::string& name) {
+    const cam::PistonJob& job = file.job;
+    const FtsSimulation& f = s.fts;
+    const FtsParameters& p = s.parameters;
+    fmt::print("{}: piston Z {:g} .. {:g} mm at {:g} mm/rev, section {}, {:g} rpm\n", name, p.z_start_mm, p.z_end_mm,
+               p.feed_mm_rev, cam::name(job.profile.shape().kind()), p.rpm);
+    fmt::print("  cam table {} x {} cells ({:.0f} kB), error bound {:.3g} nm (tolerance {:.3g} nm)\n",
+               s.table_theta_cells, s.table_z_cells, static_cast<double>(s.table_bytes) / 1024.0,
+               s.table_error_bound_mm * 1e6, s.table_tolerance_mm * 1e6);
+    fmt::print("  servo {:g} Hz, zeta {:g}, controller model {:g} % off; {}-bit DAC over {:g} mm ({:.4g} nm steps)\n",
+               p.servo.natural_frequency_hz, p.servo.damping, p.servo.model_error * 100, p.servo.dac_bits,
+               p.servo.stroke_mm, f.dac_step_mm * 1e6);
+    fmt::print("  {} counts per turn: {:.6g} Hz control rate; spindle speed ripple ±{:g} % once per turn{}\n",
+               p.encoder_counts, f.tick_rate_hz, p.ripple.fraction * 100,
+               file.source.ripple_given ? "" : " (the job gives none: the simulation's default)");
+    fmt::print("  displacement up to {:.4f} mm of {:.4f} mm; acceleration {:.4g} mm/s2 of {:.4g} ({} rpm at most)\n",
+               s.fit.peak_displacement_mm, s.fit.limit_mm, s.acceleration_mm_s2, s.acceleration_limit_mm_s2,
+               std::isfinite(s.max_rpm) ? fmt::format("{:.0f}", std::floor(s.max_rpm)) : "no limit");
+    fmt::print("  profile error over the turned surface   P-V um      RMS um\n");
+    for (const auto& [label, r] : {std::pair{"uncompensated", &f.uncompensated}, std::pair{"feedforward", &f.feedforward},
+                                   std::pair{"learning", &f.learning}}) {
+        fmt::print("    {:<36} {:>9.4f} {:>11.4f}\n", label, r->pv_um, r->rms_um);
+    }
+    const std::string settled = s.settled_turn < 0 ? "never within 1 um per turn"
+                                                   : fmt::format("every turn within 1 um from turn {}", s.settled_turn);
+    fmt::print("  learning: {} (tool engages at turn {}); contraction {:.3f}\n", settled, p.air_turns,
+               f.learning_contraction.any_frequency);
+    fmt::print("  {} ticks per run, {:.3f} s of spindle time\n", f.ticks, f.duration_s);
+}
+
+//! The outputs, written together: every one is opened as NAME.partial before any is renamed, so
+//! a path that cannot be written leaves none of them.
+bool write_outputs(const std::vector<std::pair<std::string, std::string>>& outputs) {
+    std::vector<PartialFile> files;
+    for (const auto& [path, content] : outputs) {
+        std::optional<PartialFile> file = PartialFile::create(path);
+        if (!file) return false;
+        file->write(content);
+        files.push_back(std::move(*file));
+    }
+    bool ok = true;
+    for (PartialFile& file : files) ok = file.commit() && ok;
+    return ok;
+}
+
+int run_piston(PistonOptions options) {
+    Result<PistonJobFile> file = load_piston_job_file(options.job);
+    if (!file) {
+        print_diagnostics(file.diagnostics());
+        return exit_bad_input;
+    }
+    PistonRunOptions run;
+    run.trace_turns = options.trace.empty() ? 0 : options.trace_turns;
+    Result<PistonSimulation> simulation = simulate_piston(*file, run);
+    if (!simulation) {
+        print_diagnostics(simulation.diagnostics());
+        return exit_bad_input;
+    }
+    const cam::PistonJob& job = file->job;
+    std::vector<std::pair<std::string, std::string>> outputs;
+    if (!options.cam_table.empty()) {
+        std::ostringstream csv;
+        cam::write_cam_table_csv(csv, job);
+        outputs.emplace_back(options.cam_table, std::move(csv).str());
+    }
+    if (!options.trace.empty()) outputs.emplace_back(options.trace, format_fts_trace_csv(simulation->fts.trace));
+    if (!options.svg_dir.empty()) {
+        std::error_code error;
+        std::filesystem::create_directories(options.svg_dir, error);
+        if (error) {
+            fmt::print(stderr, "{}:0:0: error: cannot create the directory: {}\n", options.svg_dir, error.message());
+            return exit_bad_input;
+        }
+        const std::filesystem::path dir(options.svg_dir);
+        outputs.emplace_back((dir / "section.svg").string(), piston_section_svg(job));
+        outputs.emplace_back((dir / "drawing.svg").string(), piston_drawing_svg(job));
+        outputs.emplace_back((dir / "turn_error.svg").string(),
+                             piston_turn_error_svg(simulation->fts, simulation->parameters.air_turns));
+    }
+    if (!write_outputs(outputs)) return exit_bad_input;
+    if (options.json) {
+        print_json(*simulation);
+    } else {
+        print_text(*simulation, *file, options.job);
+    }
+    return 0;
+}
+
+}  // namespace
+
+void add_piston_verb(CLI::App& app, int& exit_status) {
+    auto options = std::make_shared<PistonOptions>();
+    CLI::App* verb = app.add_subcommand("piston", "Oval piston turning on a fast tool servo: cam table, profile error");
+    verb->add_option("JOB", options->job, "job file (TOML, tables [piston] and [servo])")->required();
+    verb->add_flag("--json", options->json, "print the report as JSON");
+    verb->add_option("--svg", options->svg_dir,
+                     "write section.svg, drawing.svg and turn_error.svg into DIR (created if missing)");
+    verb->add_option("--cam-table", options->cam_table,
+                     "write the drawn profile at the stations, every degree: z_mm,phi_deg,radius_mm");
+    CLI::Option* trace = verb->add_option(
+        "--trace", options->trace, "write the learning run's last turns at every control tick (CSV)");
+    verb->add_option("--trace-turns", options->trace_turns, "turns in --trace (default 3)")
+        ->check(CLI::Range(1, 1000000))
+        ->needs(trace);
+    verb->callback([options, &exit_status] { exit_status = run_piston(*options); });
+}
+
+}  // namespace nckit::cli

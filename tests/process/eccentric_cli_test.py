@@ -1,0 +1,47 @@
+#!/usr/bin/env python3
+"""`nckit eccentric` on the example: the JSON contract, the worked cam, a slide limited by its
+acceleration, the servo's lag without feedforward, the cam table, and a bad job exiting 2."""
+import csv
+import json
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+nckit, root = sys.argv[1], sys.argv[2]
+job = os.path.join(root, "examples/eccentric/eccentric_cam.toml")
+lathe = os.path.join(root, "examples/machines/lathe.toml")
+
+
+def run(*args):
+    return subprocess.run([nckit, *args], capture_output=True, text=True)
+
+
+with tempfile.TemporaryDirectory() as tmp:
+    table = os.path.join(tmp, "cam.csv")
+    r = run("eccentric", job, "--machine", lathe, "--json", "--cam-table", table)
+    assert r.returncode == 0, r.stderr
+    report = json.loads(r.stdout)
+    for key in ("roundness_um", "center_offset_um", "max_rpm"):
+        assert isinstance(report[key], (int, float)), key
+    assert report["roundness_um"] < 1 and report["center_offset_um"] < 1, report
+    # e(1 + e/r) = 3.45 mm/rad²: 500 mm/s² allows sqrt(500 / 3.45) rad/s = 114.96 rpm.
+    assert abs(report["max_rpm"] - 114.96) < 0.01 and report["limited_by"] == "acceleration", report
+    assert report["servo_axis"] is True
+    assert report["uncompensated"]["center_offset_um"] > 100, report["uncompensated"]
+    assert report["x_diameter_mm"] == {"min": 34, "max": 46}
+    with open(table) as f:
+        rows = list(csv.DictReader(f))
+    assert len(rows) == 360 and float(rows[0]["x_diameter_mm"]) == 46.0
+    assert abs(float(rows[90]["x_diameter_mm"]) - 39.547440) < 1e-6
+
+    bad = os.path.join(tmp, "bad.toml")
+    with open(bad, "w") as f:
+        f.write("[eccentric]\nblank_diameter_mm = 60.0\neccentricity_mm = 3.0\neccentric_radius_mm = 20.0\n"
+                "z_start_mm = 0.0\nz_end_mm = -30.0\nrpm = 400\nfeed_mm_rev = 0.1\n")
+    r = run("eccentric", bad, "--machine", lathe, "--cam-table", os.path.join(tmp, "never.csv"))
+    assert r.returncode == 2, r.returncode
+    assert re.search(r"bad\.toml:7:7: error: at 400 rpm the X axis would need .* up to 115 rpm", r.stderr), r.stderr
+    assert not os.path.exists(os.path.join(tmp, "never.csv"))
+print("ok")
