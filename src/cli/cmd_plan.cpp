@@ -7,6 +7,7 @@
 
 #include "common.hpp"
 #include "partial_file.hpp"
+#include "plan_stream.hpp"
 #include "nckit/plan/planner.hpp"
 #include "nckit/plan/sync_report.hpp"
 #include "nckit/plan/trajectory_stats.hpp"
@@ -92,43 +93,25 @@ int run_plan(const PlanOptions& options) {
     // A bad program plans nothing: returning drops the unfinished trace with its PartialFile.
     std::int64_t moves = 0;
     double cycle_time_s = 0;
-    auto drain = [&] {
-        TrajectoryPiece piece;
-        while (planner.pop(piece)) {
-            peaks.add(piece);
-            sync.add(piece);
-            cycle_time_s = piece.start_time_s + piece.duration_s;
-            if (trace_file) {
-                trace.add(piece, trace_text);
-                if (trace_text.size() > (1 << 16)) {
-                    trace_file->write(trace_text);
-                    trace_text.clear();
-                }
+    auto on_piece = [&](const TrajectoryPiece& piece) {
+        peaks.add(piece);
+        sync.add(piece);
+        cycle_time_s = piece.start_time_s + piece.duration_s;
+        if (trace_file) {
+            trace.add(piece, trace_text);
+            if (trace_text.size() > (1 << 16)) {
+                trace_file->write(trace_text);
+                trace_text.clear();
             }
         }
     };
-    for (;;) {
-        InterpResult result = interpreter->next();
-        if (std::holds_alternative<ProgramEnd>(result)) break;
-        if (const auto* diagnostic = std::get_if<Diagnostic>(&result)) {
-            print_diagnostic(*diagnostic);
-            return exit_bad_input;
-        }
-        const Move& move = std::get<Move>(result);
+    auto on_move = [&](const Move& move) {
         if (std::holds_alternative<Line>(move.what) || std::holds_alternative<Arc>(move.what) ||
             std::holds_alternative<SyncMove>(move.what)) {
             ++moves;
         }
-        planner.push(move);
-        if (!planner.diagnostics().empty()) break;
-        drain();
-    }
-    if (!planner.diagnostics().empty()) {
-        print_diagnostics(planner.diagnostics());
-        return exit_bad_input;
-    }
-    planner.finish();
-    drain();
+    };
+    if (!plan_program(*interpreter, planner, on_piece, on_move)) return exit_bad_input;
     if (trace_file) {
         trace.finish(trace_text);
         trace_file->write(trace_text);

@@ -16,6 +16,7 @@
 
 #include "common.hpp"
 #include "partial_file.hpp"
+#include "plan_stream.hpp"
 #include "nckit/drive/servo_follow.hpp"
 #include "nckit/plan/planner.hpp"
 #include "verbs.hpp"
@@ -84,27 +85,9 @@ int run_servo(const ServoOptions& options) {
         };
     }
     // A bad program reports nothing: returning drops the unfinished trace with its PartialFile.
-    auto drain = [&] {
-        TrajectoryPiece piece;
-        while (planner.pop(piece)) follower.add(piece, sink);
-    };
-    for (;;) {
-        InterpResult result = interpreter->next();
-        if (std::holds_alternative<ProgramEnd>(result)) break;
-        if (const auto* diagnostic = std::get_if<Diagnostic>(&result)) {
-            print_diagnostic(*diagnostic);
-            return exit_bad_input;
-        }
-        planner.push(std::get<Move>(result));
-        if (!planner.diagnostics().empty()) break;
-        drain();
-    }
-    if (!planner.diagnostics().empty()) {
-        print_diagnostics(planner.diagnostics());
+    if (!plan_program(*interpreter, planner, [&](const TrajectoryPiece& piece) { follower.add(piece, sink); })) {
         return exit_bad_input;
     }
-    planner.finish();
-    drain();
     follower.finish(sink);
     if (trace_file) {
         trace_file->write(trace_text);

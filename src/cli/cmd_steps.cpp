@@ -23,6 +23,7 @@
 
 #include "common.hpp"
 #include "partial_file.hpp"
+#include "plan_stream.hpp"
 #include "step_record.hpp"
 #include "nckit/drive/phase_table.hpp"
 #include "nckit/drive/step_compress.hpp"
@@ -128,33 +129,13 @@ int run_steps(const StepsOptions& options) {
         }
         out.maybe_flush();
     };
-    auto drain = [&] {
-        TrajectoryPiece piece;
-        StepEvent event;
-        while (planner.pop(piece)) {
-            steps.add(piece);
-            while (steps.pop(event)) write(event);
-        }
-    };
-    for (;;) {
-        InterpResult result = interpreter->next();
-        if (std::holds_alternative<ProgramEnd>(result)) break;
-        if (const auto* diagnostic = std::get_if<Diagnostic>(&result)) {
-            print_diagnostic(*diagnostic);
-            return exit_bad_input;
-        }
-        planner.push(std::get<Move>(result));
-        if (!planner.diagnostics().empty()) break;
-        drain();
-    }
-    if (!planner.diagnostics().empty()) {
-        print_diagnostics(planner.diagnostics());
-        return exit_bad_input;
-    }
-    planner.finish();
-    drain();
-    steps.finish();
     StepEvent event;
+    auto on_piece = [&](const TrajectoryPiece& piece) {
+        steps.add(piece);
+        while (steps.pop(event)) write(event);
+    };
+    if (!plan_program(*interpreter, planner, on_piece)) return exit_bad_input;
+    steps.finish();
     while (steps.pop(event)) write(event);
     if (compress) {
         for (std::size_t a = 0; a < compressors.size(); ++a) {

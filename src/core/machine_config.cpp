@@ -1,19 +1,13 @@
 #include <algorithm>
 #include <array>
-#include <cctype>
-#include <cerrno>
 #include <cstdint>
-#include <cstring>
-#include <fstream>
-#include <sstream>
-#include <system_error>
-#include <tuple>
 
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
 #include "nckit/core/machine.hpp"
-#include "toml_table_reader.hpp"
+#include "nckit/core/toml_file.hpp"
+#include "nckit/core/toml_table_reader.hpp"
 
 namespace nckit {
 
@@ -32,18 +26,6 @@ struct AxisEntry {
     bool valid = false;  //!< the table produced no diagnostics
     toml::source_region name_region;
 };
-
-std::string lower_first(std::string text) {
-    if (text.empty()) return text;
-    text[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(text[0])));
-    return text;
-}
-
-bool read_into(TableReader& reader, std::string_view key, Need need, Sign sign, double& out) {
-    const std::optional<double> value = reader.number(key, need, sign);
-    if (value) out = *value;
-    return value.has_value();
-}
 
 //! A list of M-code numbers such as `exact_stop_mcodes = [24, 25]`; absent means empty.
 void read_mcode_list(TableReader& reader, std::string_view key, std::vector<int>& out, ConfigSink& sink) {
@@ -66,7 +48,7 @@ void read_machine(const toml::table& table, MachineConfig& config, ConfigSink& s
         config.name = std::move(*name);
     }
     // Optional: 1 ms is the servo period nearly every controller (LinuxCNC included) runs.
-    read_into(reader, "servo_period_s", Need::optional, Sign::positive, config.servo_period_s);
+    reader.number_into("servo_period_s", Need::optional, Sign::positive, config.servo_period_s);
     if (std::optional<bool> diameter = reader.flag("diameter_mode", Need::optional)) {
         config.diameter_mode = *diameter;
     }
@@ -98,18 +80,18 @@ void read_machine(const toml::table& table, MachineConfig& config, ConfigSink& s
 // Limits end up as divisors (time = distance / velocity, steps = mm * steps_per_unit), so zero
 // is an error here rather than a silent "unlimited" or a division by zero in the planner.
 void read_limits(TableReader& reader, AxisConfig& axis) {
-    read_into(reader, "max_velocity", Need::required, Sign::positive, axis.max_velocity);
-    read_into(reader, "max_acceleration", Need::required, Sign::positive, axis.max_acceleration);
-    read_into(reader, "max_jerk", Need::required, Sign::positive, axis.max_jerk);
-    read_into(reader, "steps_per_unit", Need::required, Sign::positive, axis.steps_per_unit);
-    read_into(reader, "backlash", Need::optional, Sign::non_negative, axis.backlash);
-    read_into(reader, "backlash_rate_steps_s", Need::optional, Sign::positive, axis.backlash_rate_steps_s);
+    reader.number_into("max_velocity", Need::required, Sign::positive, axis.max_velocity);
+    reader.number_into("max_acceleration", Need::required, Sign::positive, axis.max_acceleration);
+    reader.number_into("max_jerk", Need::required, Sign::positive, axis.max_jerk);
+    reader.number_into("steps_per_unit", Need::required, Sign::positive, axis.steps_per_unit);
+    reader.number_into("backlash", Need::optional, Sign::non_negative, axis.backlash);
+    reader.number_into("backlash_rate_steps_s", Need::optional, Sign::positive, axis.backlash_rate_steps_s);
 }
 
 void read_travel(TableReader& reader, AxisConfig& axis, ConfigSink& sink) {
-    const bool have_min = read_into(reader, "min", Need::required, Sign::any, axis.min);
-    const bool have_max = read_into(reader, "max", Need::required, Sign::any, axis.max);
-    const bool have_home = read_into(reader, "home", Need::optional, Sign::any, axis.home);
+    const bool have_min = reader.number_into("min", Need::required, Sign::any, axis.min);
+    const bool have_max = reader.number_into("max", Need::required, Sign::any, axis.max);
+    const bool have_home = reader.number_into("home", Need::optional, Sign::any, axis.home);
     if (!have_min || !have_max) return;
     if (axis.min >= axis.max) {
         sink.error(reader.region_of("max"), "config-value",
@@ -183,10 +165,10 @@ void read_servo(TableReader& axis_reader, AxisConfig& axis, ConfigSink& sink) {
     TableReader reader(*table, "[axis.servo]", sink);
     AxisServoConfig servo;
     const bool have_frequency =
-        read_into(reader, "natural_frequency_hz", Need::required, Sign::positive, servo.natural_frequency_hz);
-    const bool have_damping = read_into(reader, "damping", Need::required, Sign::non_negative, servo.damping);
+        reader.number_into("natural_frequency_hz", Need::required, Sign::positive, servo.natural_frequency_hz);
+    const bool have_damping = reader.number_into("damping", Need::required, Sign::non_negative, servo.damping);
     // A gain of 0 would make an axis that never moves; a negative one one that runs away.
-    const bool gain_ok = !reader.has("gain") || read_into(reader, "gain", Need::optional, Sign::positive, servo.gain);
+    const bool gain_ok = !reader.has("gain") || reader.number_into("gain", Need::optional, Sign::positive, servo.gain);
     reader.reject_unknown_keys();
     if (have_frequency && have_damping && gain_ok) axis.servo = servo;
 }
@@ -264,11 +246,11 @@ void read_axes(TableReader& root, MachineConfig& config, ConfigSink& sink) {
 
 void read_spindle(const toml::table& table, MachineConfig& config, ConfigSink& sink) {
     TableReader reader(table, "[spindle]", sink);
-    read_into(reader, "max_rpm", Need::optional, Sign::positive, config.spindle.max_rpm);
+    reader.number_into("max_rpm", Need::optional, Sign::positive, config.spindle.max_rpm);
     if (auto counts = reader.integer("encoder_counts", Need::optional, Sign::positive)) {
         config.spindle.encoder_counts = *counts;
     }
-    read_into(reader, "ripple_fraction", Need::optional, Sign::non_negative, config.spindle.ripple_fraction);
+    reader.number_into("ripple_fraction", Need::optional, Sign::non_negative, config.spindle.ripple_fraction);
     if (config.spindle.ripple_fraction >= 0.5) {
         sink.error(reader.region_of("ripple_fraction"), "config-value",
                    fmt::format("'ripple_fraction' must be below 0.5 (a speed swinging by half stalls the cut), not {}",
@@ -277,19 +259,8 @@ void read_spindle(const toml::table& table, MachineConfig& config, ConfigSink& s
     if (auto harmonic = reader.integer("ripple_per_turn", Need::optional, Sign::positive)) {
         config.spindle.ripple_per_turn = *harmonic;
     }
-    read_into(reader, "ripple_phase_deg", Need::optional, Sign::any, config.spindle.ripple_phase_deg);
+    reader.number_into("ripple_phase_deg", Need::optional, Sign::any, config.spindle.ripple_phase_deg);
     reader.reject_unknown_keys();
-}
-
-//! The table under a top-level key, or null (reported when it is present but not a table).
-const toml::table* section(TableReader& root, std::string_view key, ConfigSink& sink) {
-    const toml::node* node = root.node(key, Need::optional);
-    if (node == nullptr) return nullptr;
-    if (const toml::table* table = node->as_table()) return table;
-    sink.error(node->source(), "config-type",
-               fmt::format("'{}' must be a table ([{}]), not {}", key, key,
-                           detail::type_name(node->type())));
-    return nullptr;
 }
 
 MachineConfig read_document(const toml::table& document, ConfigSink& sink) {
@@ -297,42 +268,27 @@ MachineConfig read_document(const toml::table& document, ConfigSink& sink) {
     // An omitted [spindle] (or key in it) means the built-in mill's spindle.
     config.spindle = default_mill().spindle;
     TableReader root(document, "", sink);
-    if (const toml::table* machine = section(root, "machine", sink)) {
+    if (const toml::table* machine = root.table("machine", Need::optional)) {
         read_machine(*machine, config, sink);
     } else if (!root.has("machine")) {
         sink.error(root.region(), "config-missing-key", "missing table [machine]");
     }
     read_axes(root, config, sink);
-    if (const toml::table* spindle = section(root, "spindle", sink)) {
+    if (const toml::table* spindle = root.table("spindle", Need::optional)) {
         read_spindle(*spindle, config, sink);
     }
     root.reject_unknown_keys();
     return config;
 }
 
-//! toml++ says "Error while parsing key-value pair: ..."; our messages are lower case and
-//! the printed form already says "error".
-Diagnostic syntax_error(const toml::parse_error& error, std::shared_ptr<const std::string> file) {
-    std::string description(error.description());
-    constexpr std::string_view prefix = "Error while parsing ";
-    if (description.rfind(prefix, 0) == 0) {
-        description = "toml syntax error in " + description.substr(prefix.size());
-    } else {
-        description = "toml syntax error: " + lower_first(std::move(description));
-    }
-    while (!description.empty() && description.back() == '.') description.pop_back();
-    const toml::source_position at = error.source().begin;
-    return error_at(make_location(std::move(file), at.line, at.column), "config-syntax",
-                    std::move(description));
-}
-
-// Sorted so the output reads top to bottom; toml++ visits keys alphabetically, not in file order.
-void sort_by_position(Diagnostics& diagnostics) {
-    std::stable_sort(diagnostics.begin(), diagnostics.end(),
-                     [](const Diagnostic& a, const Diagnostic& b) {
-                         return std::tie(a.location.line, a.location.column) <
-                                std::tie(b.location.line, b.location.column);
-                     });
+//! The document's config, or every problem found in it, sorted top to bottom.
+Result<MachineConfig> read_file(Result<detail::TomlFile> file) {
+    if (!file) return file.diagnostics();
+    ConfigSink sink{file->name, {}};
+    MachineConfig config = read_document(file->document, sink);
+    if (sink.diagnostics.empty()) return config;
+    detail::sort_by_position(sink.diagnostics);
+    return std::move(sink.diagnostics);
 }
 
 }  // namespace
@@ -362,36 +318,12 @@ bool MachineConfig::is_exact_stop_mcode(int code) const {
            exact_stop_mcodes.end();
 }
 
-Result<MachineConfig> parse_machine_config(std::string_view toml_text,
-                                           const std::string& file_name) {
-    ConfigSink sink{std::make_shared<const std::string>(file_name), {}};
-    toml::table document;
-    try {
-        document = toml::parse(toml_text, std::string_view{file_name});
-    } catch (const toml::parse_error& error) {
-        return syntax_error(error, sink.file);
-    }
-    MachineConfig config = read_document(document, sink);
-    if (sink.diagnostics.empty()) return config;
-    sort_by_position(sink.diagnostics);
-    return std::move(sink.diagnostics);
+Result<MachineConfig> parse_machine_config(std::string_view toml_text, const std::string& file_name) {
+    return read_file(detail::parse_toml_text(toml_text, file_name));
 }
 
 Result<MachineConfig> load_machine_config(const std::filesystem::path& path) {
-    const std::string file_name = path.string();
-    auto cannot_read = [&](std::string reason) {
-        return error_at(make_location(std::make_shared<const std::string>(file_name), 0, 0),
-                        "config-io", fmt::format("cannot read machine config: {}", reason));
-    };
-    // An ifstream "opens" a directory and only fails (by throwing) on the first read.
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) return cannot_read("it is a directory");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return cannot_read(lower_first(std::strerror(errno)));
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (in.bad()) return cannot_read("read failed");
-    return parse_machine_config(text.str(), file_name);
+    return read_file(detail::load_toml_file(path, "machine config"));
 }
 
 }  // namespace nckit

@@ -1,4 +1,4 @@
-#include "toml_table_reader.hpp"
+#include "nckit/core/toml_table_reader.hpp"
 
 #include <algorithm>
 #include <cmath>

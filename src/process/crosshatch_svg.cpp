@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "nckit/process/crosshatch_scan.hpp"
+#include "svg_plot.hpp"
 
 namespace nckit {
 
@@ -18,16 +19,6 @@ constexpr double margin_right_px = 30;
 constexpr double margin_bottom_px = 50;
 constexpr double max_plot_width_px = 960;
 constexpr double max_plot_height_px = 640;
-
-//! A round tick step near span/count: 1, 2 or 5 times a power of ten.
-double tick_step(double span, double count) {
-    const double raw = span / count;
-    const double decade = std::pow(10.0, std::floor(std::log10(raw)));
-    for (double m : {1.0, 2.0, 5.0}) {
-        if (m * decade >= raw) return m * decade;
-    }
-    return 10.0 * decade;
-}
 
 struct Frame {
     double px_per_mm = 1;
@@ -78,10 +69,7 @@ std::string crosshatch_svg(const CrosshatchPlan& plan, const CrosshatchScan& sca
     const double width = margin_left_px + plot_w + margin_right_px;
     const double height = margin_top_px + plot_h + margin_bottom_px;
 
-    std::string out = fmt::format(
-        R"(<svg xmlns="http://www.w3.org/2000/svg" width="{:.0f}" height="{:.0f}" viewBox="0 0 {:.0f} {:.0f}" font-family="sans-serif" font-size="12">)",
-        width, height, width, height);
-    out += "\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+    std::string out = detail::svg_open(width, height);
     out += fmt::format(
         R"(<text x="{}" y="22" font-size="15">Crosshatch, bore unrolled: D {} mm, H {} mm, {} heads, N {}: angle {:.3f}°</text>)",
         margin_left_px, job.bore_diameter_mm, job.bore_length_mm, job.heads, job.lines_per_length,
@@ -100,7 +88,7 @@ std::string crosshatch_svg(const CrosshatchPlan& plan, const CrosshatchScan& sca
                            frame.x(angle), frame.y(-frame.height_mm));
         out += '\n';
     }
-    const double depth_step = tick_step(frame.height_mm, 6);
+    const double depth_step = detail::tick_step(frame.height_mm, 6);
     for (double depth = 0; depth <= frame.height_mm + 1e-9; depth += depth_step) {
         out += fmt::format(R"(<line x1="{:.2f}" y1="{:.2f}" x2="{:.2f}" y2="{:.2f}"/>)", frame.x(0), frame.y(-depth),
                            frame.x(360), frame.y(-depth));

@@ -1,6 +1,7 @@
 #pragma once
-// What the piston's SVG plots share: round tick steps, the document frame, line colours.
-// Written by hand, as crosshatch_svg.cpp is: a few dozen elements per plot need no plotting
+// What nckit's SVG plots share (crosshatch, piston): round tick steps, the document frame,
+// line colours.
+// Written by hand: a few dozen elements per plot need no plotting
 // library, and plain text keeps the files byte-identical from run to run.
 #include <algorithm>
 #include <array>

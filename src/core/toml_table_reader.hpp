@@ -1,2 +1,0 @@
-#pragma once
-#include "nckit/core/toml_table_reader.hpp"
