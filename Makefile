@@ -27,6 +27,12 @@ run: build
 	@echo "== the eccentric shaft, a Custom Macro B program"
 	@$(NCKIT) moves examples/eccentric/eccentric_shaft.nc --machine examples/machines/lathe.toml \
 	    --library examples/eccentric/library --summary
+	@echo "== the same shaft by electronic cam: X slaved to the spindle angle"
+	@$(NCKIT) eccentric examples/eccentric/eccentric_cam.toml --machine examples/machines/lathe.toml
+	@echo "== crosshatch laser hardening of a bore, 12 heads at 30 degrees"
+	@$(NCKIT) crosshatch examples/crosshatch/bore_12heads_30deg.toml
+	@echo "== oval piston on a fast tool servo at 2500 rpm: no compensation, feedforward, learning"
+	@$(NCKIT) piston examples/piston/piston.toml
 
 test: build
 	@ctest --preset release

@@ -4,6 +4,7 @@
 // --steps the two motors' step streams (binary records as `nckit steps` writes them, or with
 // --text "t_ns axis dir port" lines), --svg the unrolled bore with every laser track.
 // The report goes to standard output, as text or with --json. A bad job writes nothing.
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
@@ -76,7 +77,8 @@ void print_text(const CrosshatchPlan& plan, const CrosshatchScan& scan, const st
                                           plan.index_move_deg, plan.index_move_steps));
     fmt::print("  scan ({}): {} cycles, {:.1f} s; tracks at {:.4f} deg ({:+.4f}), drift {:.4g} deg per stroke, "
                "closure error {:.3g} steps\n",
-               timing_name(job.timing), job.cycles, scan.duration_s, scan.track_angle_deg, scan.track_angle_error_deg,
+               timing_name(job.timing), job.cycles, scan.duration_s, scan.track_angle_deg,
+               std::abs(scan.track_angle_error_deg) < 5e-9 ? 0.0 : scan.track_angle_error_deg,
                scan.drift_deg_per_stroke, scan.closure_error_steps);
 }
 
