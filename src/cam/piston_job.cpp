@@ -156,16 +156,11 @@ std::optional<SectionShape> read_shape(TableReader& reader, const FunctionEntry&
 
 //! The table under a top-level key; a missing or mistyped one is reported.
 const toml::table* section(TableReader& root, std::string_view key, ConfigSink& sink) {
-    const toml::node* node = root.node(key, Need::optional);
-    if (node == nullptr) {
+    const toml::table* table = root.table(key, Need::optional);
+    if (table == nullptr && !root.has(key)) {
         sink.error(root.region(), "config-missing-key", fmt::format("missing table [{}]", key));
-        return nullptr;
     }
-    if (const toml::table* table = node->as_table()) return table;
-    sink.error(node->source(), "config-type",
-               fmt::format("'{}' must be a table ([{}]), not {}", key, key,
-                           nckit::detail::type_name(node->type())));
-    return nullptr;
+    return table;
 }
 
 //! A drawing function the job must give, in [piston] or in its segments.
@@ -231,6 +226,13 @@ std::optional<PistonJob> read_document(const toml::table& document, ConfigSink& 
     if (auto ripple =
             bounded(reader, "spindle_ripple", Need::optional, Sign::non_negative, 0.5, sink)) {
         job.spindle_ripple = *ripple;
+    }
+    job.source.encoder_counts = sink.at(reader.region_of("encoder_counts"));
+    job.source.ripple_given = reader.has("spindle_ripple");
+    if (servo_table != nullptr) {
+        job.source.servo = sink.at(servo_table->source());
+        const toml::node* stroke = servo_table->get("stroke_mm");
+        job.source.stroke = sink.at(stroke != nullptr ? stroke->source() : servo_table->source());
     }
     reader.reject_unknown_keys();
     if (!sink.diagnostics.empty()) return std::nullopt;

@@ -63,8 +63,7 @@ void print_json(const PistonSimulation& s) {
         p.z_start_mm, p.z_end_mm, p.feed_mm_rev, f.ticks, f.cut_ticks, f.duration_s);
 }
 
-void print_text(const PistonSimulation& s, const PistonJobFile& file, const std::string& name) {
-    const cam::PistonJob& job = file.job;
+void print_text(const PistonSimulation& s, const cam::PistonJob& job, const std::string& name) {
     const FtsSimulation& f = s.fts;
     const FtsParameters& p = s.parameters;
     fmt::print("{}: piston Z {:g} .. {:g} mm at {:g} mm/rev, section {}, {:g} rpm\n", name, p.z_start_mm, p.z_end_mm,
@@ -77,7 +76,7 @@ void print_text(const PistonSimulation& s, const PistonJobFile& file, const std:
                p.servo.stroke_mm, f.dac_step_mm * 1e6);
     fmt::print("  {} counts per turn: {:.6g} Hz control rate; spindle speed ripple ±{:g} % once per turn{}\n",
                p.encoder_counts, f.tick_rate_hz, p.ripple.fraction * 100,
-               file.source.ripple_given ? "" : " (the job gives none: the simulation's default)");
+               job.source.ripple_given ? "" : " (the job gives none: the simulation's default)");
     fmt::print("  displacement up to {:.4f} mm of {:.4f} mm; acceleration {:.4g} mm/s2 of {:.4g} ({} rpm at most)\n",
                s.fit.peak_displacement_mm, s.fit.limit_mm, s.acceleration_mm_s2, s.acceleration_limit_mm_s2,
                std::isfinite(s.max_rpm) ? fmt::format("{:.0f}", std::floor(s.max_rpm)) : "no limit");
@@ -109,19 +108,19 @@ bool write_outputs(const std::vector<std::pair<std::string, std::string>>& outpu
 }
 
 int run_piston(PistonOptions options) {
-    Result<PistonJobFile> file = load_piston_job_file(options.job);
-    if (!file) {
-        print_diagnostics(file.diagnostics());
+    Result<cam::PistonJob> loaded = cam::load_piston_job(options.job);
+    if (!loaded) {
+        print_diagnostics(loaded.diagnostics());
         return exit_bad_input;
     }
     PistonRunOptions run;
     run.trace_turns = options.trace.empty() ? 0 : options.trace_turns;
-    Result<PistonSimulation> simulation = simulate_piston(*file, run);
+    Result<PistonSimulation> simulation = simulate_piston(*loaded, run);
     if (!simulation) {
         print_diagnostics(simulation.diagnostics());
         return exit_bad_input;
     }
-    const cam::PistonJob& job = file->job;
+    const cam::PistonJob& job = *loaded;
     std::vector<std::pair<std::string, std::string>> outputs;
     if (!options.cam_table.empty()) {
         std::ostringstream csv;
@@ -146,7 +145,7 @@ int run_piston(PistonOptions options) {
     if (options.json) {
         print_json(*simulation);
     } else {
-        print_text(*simulation, *file, options.job);
+        print_text(*simulation, job, options.job);
     }
     return 0;
 }

@@ -93,8 +93,7 @@ StrokeFit fit_stroke(const cam::CamTable& table, const StrokeReference& referenc
 StrokeReference::StrokeReference(const cam::CamTable& table, std::size_t points, double theta_step_deg)
     : spline_(reference_spline(table, points, theta_step_deg)) {}
 
-FtsParameters piston_fts_parameters(const PistonJobFile& file, const PistonRunOptions& options) {
-    const cam::PistonJob& job = file.job;
+FtsParameters piston_fts_parameters(const cam::PistonJob& job, const PistonRunOptions& options) {
     FtsParameters p;
     p.servo.natural_frequency_hz = job.servo.natural_frequency_hz;
     p.servo.damping = job.servo.damping;
@@ -103,26 +102,25 @@ FtsParameters piston_fts_parameters(const PistonJobFile& file, const PistonRunOp
     p.servo.stroke_mm = job.servo.stroke_mm;
     p.rpm = job.rpm;
     p.encoder_counts = static_cast<int>(job.encoder_counts);  // the job reader caps it at 10^7
-    if (file.source.ripple_given) p.ripple.fraction = job.spindle_ripple;
+    if (job.source.ripple_given) p.ripple.fraction = job.spindle_ripple;
     p.feed_mm_rev = job.feed_mm_rev;
     p.z_start_mm = job.z_mm.front();
     p.z_end_mm = job.z_mm.back();
     p.air_turns = options.air_turns;
     p.learning.harmonics = std::min(default_harmonics, std::max(0, (p.encoder_counts - 1) / 2));
     p.trace_turns = options.trace_turns;
-    p.where = file.source.servo;
+    p.where = job.source.servo;
     return p;
 }
 
-Result<PistonSimulation> simulate_piston(const PistonJobFile& file, const PistonRunOptions& options) {
-    const cam::PistonJob& job = file.job;
+Result<PistonSimulation> simulate_piston(const cam::PistonJob& job, const PistonRunOptions& options) {
     PistonSimulation out;
-    out.parameters = piston_fts_parameters(file, options);
+    out.parameters = piston_fts_parameters(job, options);
     const FtsParameters& p = out.parameters;
     // The controller's preview and its learning's phase lead span a few counts; below 8 a turn
     // has no shape left to follow.
     if (job.encoder_counts < 8) {
-        return error_at(file.source.encoder_counts, "piston-encoder",
+        return error_at(job.source.encoder_counts, "piston-encoder",
                         fmt::format("the fast tool servo needs at least 8 encoder counts per turn, not {}",
                                     job.encoder_counts));
     }
@@ -138,7 +136,7 @@ Result<PistonSimulation> simulate_piston(const PistonJobFile& file, const Piston
     const Dac dac{p.servo.dac_bits, p.servo.stroke_mm};
     out.fit = fit_stroke(table, reference, 0.5 * p.servo.stroke_mm - dac.step_mm());
     if (out.fit.peak_displacement_mm > out.fit.limit_mm) {
-        return error_at(file.source.stroke, "piston-stroke",
+        return error_at(job.source.stroke, "piston-stroke",
                         fmt::format("the profile swings {:.6f} mm from the middle of its radial range (theta {} deg, "
                                     "Z {:.4f} mm), beyond the {:.6f} mm half a stroke of {} mm reaches",
                                     out.fit.peak_displacement_mm, out.fit.theta_deg, out.fit.z_mm,

@@ -35,8 +35,8 @@ std::string job_text(const JobSpec& s) {
         s.d_to_mm, s.e_from_mm, 0.5 * (s.e_from_mm + s.e_to_mm), s.e_to_mm, s.shape, s.extra, s.stroke_mm);
 }
 
-PistonJobFile parse(const JobSpec& spec) {
-    Result<PistonJobFile> file = parse_piston_job_file(job_text(spec), "job.toml");
+cam::PistonJob parse(const JobSpec& spec) {
+    Result<cam::PistonJob> file = cam::parse_piston_job(job_text(spec), "job.toml");
     if (!file) throw std::runtime_error(format_diagnostic(file.diagnostics().front()));
     return std::move(file).value();
 }
@@ -52,10 +52,10 @@ double exact_mid_mm(const cam::PistonJob& job, double z_mm) {
     return 0.5 * (high + low);
 }
 
-TEST(PistonJobFile, SourceAndMapping) {
+TEST(PistonJob, SourceAndMapping) {
     JobSpec spec;
     spec.extra = "encoder_counts = 720\nfeed_mm_rev = 0.2\n";
-    const PistonJobFile file = parse(spec);
+    const cam::PistonJob file = parse(spec);
     EXPECT_EQ(file.source.servo.line, 9u);
     EXPECT_EQ(file.source.stroke.line, 12u);
     EXPECT_EQ(file.source.encoder_counts.line, 7u);
@@ -78,10 +78,10 @@ TEST(PistonJobFile, SourceAndMapping) {
     EXPECT_EQ(p.where.line, 9u);
 }
 
-TEST(PistonJobFile, RippleAsGivenAndHarmonicsCapped) {
+TEST(PistonJob, RippleAsGivenAndHarmonicsCapped) {
     JobSpec spec;
     spec.extra = "spindle_ripple = 0.0\nencoder_counts = 20\n";
-    const PistonJobFile file = parse(spec);
+    const cam::PistonJob file = parse(spec);
     EXPECT_TRUE(file.source.ripple_given);
     const FtsParameters p = piston_fts_parameters(file);
     EXPECT_EQ(p.ripple.fraction, 0.0);
@@ -108,16 +108,16 @@ TEST(StrokeReference, MiddleOfTheRangeOnRandomDrawings) {
         spec.shape = shapes[static_cast<std::size_t>(trial) % shapes.size()];
         spec.rpm = 500;
         SCOPED_TRACE(job_text(spec));
-        const PistonJobFile file = parse(spec);
-        const cam::CamTable table = cam::build_cam_table(file.job);
+        const cam::PistonJob file = parse(spec);
+        const cam::CamTable table = cam::build_cam_table(file);
         const StrokeReference reference(table, 41);
         for (int k = 0; k <= 12; ++k) {
             const double z = spec.z_from_mm + (spec.z_to_mm - spec.z_from_mm) * k / 12.0;
-            EXPECT_NEAR(reference.radius_mm(z), exact_mid_mm(file.job, z), 2e-6) << "z " << z;
+            EXPECT_NEAR(reference.radius_mm(z), exact_mid_mm(file, z), 2e-6) << "z " << z;
         }
         if (trial % shapes.size() == 0) {  // ellipse2: the mid radius is D/2 − E/4 exactly
             const double z = spec.z_to_mm;
-            const double d = file.job.profile.major_diameter_mm(z), e = file.job.profile.ovality_mm(z);
+            const double d = file.profile.major_diameter_mm(z), e = file.profile.ovality_mm(z);
             EXPECT_NEAR(reference.radius_mm(z), d / 2 - e / 4, 1e-7);
         }
     }
@@ -136,7 +136,7 @@ JobSpec short_job() {
 }
 
 TEST(SimulatePiston, LearningMeetsTheGoal) {
-    const PistonJobFile file = parse(short_job());
+    const cam::PistonJob file = parse(short_job());
     const Result<PistonSimulation> done = simulate_piston(file);
     ASSERT_TRUE(done.ok()) << format_diagnostic(done.diagnostics().front());
     const PistonSimulation& s = *done;
@@ -171,7 +171,7 @@ TEST(SimulatePiston, RandomJobsKeepTheOrder) {
         std::string text = job_text(spec);
         text.replace(text.find("model_error = 0.10"), 18, fmt::format("model_error = {}", error(rng)));
         SCOPED_TRACE(text);
-        const Result<PistonJobFile> file = parse_piston_job_file(text, "random.toml");
+        const Result<cam::PistonJob> file = cam::parse_piston_job(text, "random.toml");
         ASSERT_TRUE(file.ok()) << format_diagnostic(file.diagnostics().front());
         PistonRunOptions options;
         options.trace_turns = 0;
@@ -204,8 +204,8 @@ TEST(SimulatePiston, StrokeAndEncoderDiagnostics) {
 
 TEST(PistonSvg, PlotsOfEveryStationAndRun) {
     JobSpec spec = short_job();
-    const PistonJobFile file = parse(spec);
-    const std::string section = piston_section_svg(file.job);
+    const cam::PistonJob file = parse(spec);
+    const std::string section = piston_section_svg(file);
     EXPECT_EQ(section.rfind("<svg", 0), 0u);
     EXPECT_NE(section.find("</svg>"), std::string::npos);
     std::size_t polylines = 0;
@@ -216,7 +216,7 @@ TEST(PistonSvg, PlotsOfEveryStationAndRun) {
     // 0.4 mm of drop on a 45 mm radius drawn at most 30 % of the base circle: ×25 (1-2-2.5-5).
     EXPECT_NE(section.find("magnified ×25<"), std::string::npos);
 
-    const std::string drawing = piston_drawing_svg(file.job);
+    const std::string drawing = piston_drawing_svg(file);
     std::size_t circles = 0;
     for (std::size_t at = drawing.find("<circle"); at != std::string::npos; at = drawing.find("<circle", at + 1)) {
         ++circles;

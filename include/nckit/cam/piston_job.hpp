@@ -41,6 +41,7 @@
 #include "nckit/cam/piston_profile.hpp"
 #include "nckit/cam/profile_demand.hpp"
 #include "nckit/core/result.hpp"
+#include "nckit/core/source_location.hpp"
 
 namespace nckit::cam {
 
@@ -61,6 +62,14 @@ struct FastServoSpec {
     }
 };
 
+//! Where in the job file later checks (the simulation's) point, and what the file leaves unsaid.
+struct PistonJobSource {
+    SourceLocation servo;           //!< the [servo] table
+    SourceLocation stroke;          //!< [servo] stroke_mm, or the [servo] table
+    SourceLocation encoder_counts;  //!< [piston] encoder_counts, or the [piston] table
+    bool ripple_given = false;      //!< whether [piston] sets spindle_ripple
+};
+
 //! A checked piston job: every value in range, every formula compiled, the profile within
 //! the servo's stroke and acceleration at the job's rpm.
 struct PistonJob {
@@ -75,6 +84,7 @@ struct PistonJob {
     double spindle_ripple = 0;         //!< spindle speed ripple, fraction of rpm, peak
     FastServoSpec servo;
     ProfileDemand demand;              //!< what the profile asks of the servo over the stations
+    PistonJobSource source;            //!< where it stands in its file
 };
 
 //! Reads a job from TOML text; `file_name` goes into the diagnostics.

@@ -23,26 +23,6 @@
 
 namespace nckit {
 
-//! Where in the job file the simulation's own findings point, and what the file leaves unsaid.
-struct PistonJobSource {
-    SourceLocation servo;           //!< the [servo] table
-    SourceLocation stroke;          //!< [servo] stroke_mm
-    SourceLocation encoder_counts;  //!< [piston] encoder_counts, or the [piston] table
-    bool ripple_given = false;      //!< whether [piston] sets spindle_ripple
-};
-
-//! A checked piston job and its source.
-struct PistonJobFile {
-    cam::PistonJob job;
-    PistonJobSource source;
-};
-
-//! Reads a job file: every diagnostic of load_piston_job, FILE:LINE:COL.
-[[nodiscard]] Result<PistonJobFile> load_piston_job_file(const std::filesystem::path& path);
-//! The same from TOML text; `file_name` goes into the diagnostics.
-[[nodiscard]] Result<PistonJobFile> parse_piston_job_file(std::string_view toml_text,
-                                                          const std::string& file_name);
-
 //! The fast axis's zero along Z: (max_θ r + min_θ r) / 2 of the cam table at evenly spaced Z,
 //! each extreme refined by a parabola through the best sample of the turn and its neighbours,
 //! and a natural cubic spline between, so the slide's path is smooth (its curvature continuous)
@@ -94,15 +74,15 @@ struct PistonSimulation {
     int settled_turn = -1;
 };
 
-//! The simulation's parameters for `file` (see the file note for the mapping). The learned
+//! The simulation's parameters for `job` (see the file note for the mapping). The learned
 //! harmonics are capped below half the encoder counts, so a coarse encoder still learns.
-[[nodiscard]] FtsParameters piston_fts_parameters(const PistonJobFile& file,
+[[nodiscard]] FtsParameters piston_fts_parameters(const cam::PistonJob& job,
                                                   const PistonRunOptions& options = {});
 
 //! Builds the cam engine and the stroke reference, checks the displacement fits the DAC's range
 //! ("piston-stroke", at stroke_mm) and the encoder gives the controller enough counts
 //! ("piston-encoder"), then runs simulate_fast_tool_servo; its diagnostics point at [servo].
-[[nodiscard]] Result<PistonSimulation> simulate_piston(const PistonJobFile& file,
+[[nodiscard]] Result<PistonSimulation> simulate_piston(const cam::PistonJob& job,
                                                        const PistonRunOptions& options = {});
 
 }  // namespace nckit
