@@ -5,6 +5,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "servo_step.hpp"
+
 namespace nckit::drive {
 
 namespace {
@@ -104,15 +106,7 @@ ServoModel::ServoModel(const ServoParameters& parameters, double period_s, Servo
 }
 
 ServoState ServoModel::step(double setpoint) {
-    const double target = parameters_.gain * setpoint;
-    // Re-referenced only when the target moves: between changes e keeps its own exponent and
-    // decays to 0, where an absolute position would stall once v h fell below half an ulp.
-    const double e = deviation_ + (target_ - target);
-    const double v = state_.velocity;
-    deviation_ = phi_[0][0] * e + phi_[0][1] * v;
-    target_ = target;
-    state_.position = target + deviation_;
-    state_.velocity = phi_[1][0] * e + phi_[1][1] * v;
+    detail::step_held(phi_, parameters_.gain * setpoint, target_, deviation_, state_);
     setpoint_ = setpoint;
     return state_;
 }

@@ -67,38 +67,30 @@ std::vector<StepRun> compress_steps(std::span<const std::int64_t> times, std::in
         StepRun best;
         best.interval_ns = std::max<std::int64_t>(0, times[first] - t_prev_ns);
         best.count = 1;  // a single step always fits exactly
+        // The longest run that fits: doubling until one fails, then bisecting between.
+        auto fits = [&](std::size_t count) {
+            StepRun r;
+            if (!fit(times, first, count, t_prev_ns, max_error_ns, r)) return false;
+            best = r;
+            return true;
+        };
         std::size_t good = 1;
         std::size_t bad = 0;
         for (std::size_t count = 2; count <= left; count *= 2) {
-            StepRun r;
-            if (!fit(times, first, count, t_prev_ns, max_error_ns, r)) {
+            if (!fits(count)) {
                 bad = count;
                 break;
             }
-            best = r;
             good = count;
         }
-        if (bad == 0 && good < left) {
-            StepRun r;
-            if (fit(times, first, left, t_prev_ns, max_error_ns, r)) {
-                best = r;
-                good = left;
-            } else {
-                bad = left;
-            }
-        }
+        if (bad == 0 && good < left) (fits(left) ? good : bad) = left;
         while (bad > good + 1) {
             const std::size_t mid = good + (bad - good) / 2;
-            StepRun r;
-            if (fit(times, first, mid, t_prev_ns, max_error_ns, r)) {
-                best = r;
-                good = mid;
-            } else {
-                bad = mid;
-            }
+            (fits(mid) ? good : bad) = mid;
         }
-        const std::vector<std::int64_t> made = expand_run(best, t_prev_ns);
-        t_prev_ns = made.back();
+        // The run's last reproduced step (StepRun's formula with k = count): the next run starts there.
+        const auto count = static_cast<std::int64_t>(best.count);
+        t_prev_ns += count * best.interval_ns + count * (count - 1) / 2 * best.add_ns;
         runs.push_back(best);
         first += good;
     }

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "servo_step.hpp"
+
 namespace nckit::drive {
 
 VariablePeriodServo::VariablePeriodServo(const ServoParameters& parameters, ServoState initial)
@@ -26,16 +28,7 @@ const ServoDiscretisation& VariablePeriodServo::discretisation(double period_s) 
 }
 
 ServoState VariablePeriodServo::step(double setpoint, double period_s) {
-    const ServoDiscretisation& d = discretisation(period_s);
-    const auto& phi = d.transition;
-    // ServoModel::step's error form, term for term, so fixed periods give identical bits.
-    const double target = parameters_.gain * setpoint;
-    const double e = deviation_ + (target_ - target);
-    const double v = state_.velocity;
-    deviation_ = phi[0][0] * e + phi[0][1] * v;
-    target_ = target;
-    state_.position = target + deviation_;
-    state_.velocity = phi[1][0] * e + phi[1][1] * v;
+    detail::step_held(discretisation(period_s).transition, parameters_.gain * setpoint, target_, deviation_, state_);
     return state_;
 }
 
