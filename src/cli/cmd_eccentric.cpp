@@ -4,6 +4,7 @@
 // reports roundness and centre offset against the drawing and the highest spindle speed the X
 // axis can follow within 1 µm; --cam-table writes the cam, X diameter per degree.
 #include <cmath>
+#include <numbers>
 #include <optional>
 
 #include <fmt/format.h>
@@ -69,7 +70,7 @@ bool write_cam_table(const std::string& path, const EccentricJob& job) {
     if (!file) return false;
     std::string text = "theta_deg,x_diameter_mm\n";
     for (int deg = 0; deg < 360; ++deg) {
-        text += fmt::format("{},{:.6f}\n", deg, 2.0 * eccentric_cam(job, deg * M_PI / 180.0).radius_mm);
+        text += fmt::format("{},{:.6f}\n", deg, 2.0 * eccentric_cam(job, deg * std::numbers::pi / 180.0).radius_mm);
     }
     file->write(text);
     return file->commit();

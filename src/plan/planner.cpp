@@ -180,10 +180,9 @@ struct Planner::Impl {
     //! interpreter's figure stands (0 when it knew no speed either: "no usable feed").
     [[nodiscard]] double feed_mm_s(const Feed& feed) const {
         if (feed.mode != FeedMode::per_revolution) return feed.mm_per_min / 60.0;
-        const double rpm = std::abs(spindle.signed_rpm(machine.spindle));
+        const double rpm = spindle.mean_rpm(machine.spindle);
         if (rpm == 0.0) return feed.mm_per_min / 60.0;
-        const double r = machine.spindle.ripple_fraction;
-        return feed.mm_per_rev * rpm * std::sqrt(1.0 - r * r) / 60.0;
+        return feed.mm_per_rev * rpm / 60.0;
     }
 
     //! G32/G33: the axes stop, wait for the index pulse, and move the lead per turn, without
@@ -199,8 +198,7 @@ struct Planner::Impl {
         }
         PathSegment path = make_line(sync.from, sync.to);
         if (!(path.length > min_length)) return;
-        const double r = machine.spindle.ripple_fraction;
-        const double speed_mm_s = sync.feed.mm_per_rev * std::abs(rpm) * std::sqrt(1.0 - r * r) / 60.0;
+        const double speed_mm_s = sync.feed.mm_per_rev * spindle.mean_rpm(machine.spindle) / 60.0;
         if (!(speed_mm_s > 0)) {
             diagnostics.push_back(error_at(move.where, "no-feed", "G32/G33 with no lead (F)"));
             return;
@@ -208,7 +206,7 @@ struct Planner::Impl {
         if (!check_axes(path, move.where)) return;
         const ProfileLimits limits = segment_limits(path, machine, speed_mm_s, kind);
         // The axes must keep up with the spindle's fastest moment, not only its mean.
-        const double peak_mm_s = sync.feed.mm_per_rev * std::abs(rpm) * (1.0 + r) / 60.0;
+        const double peak_mm_s = sync.feed.mm_per_rev * std::abs(rpm) * (1.0 + machine.spindle.ripple_fraction) / 60.0;
         const ProfileLimits axis_limits =
             segment_limits(path, machine, std::numeric_limits<double>::infinity(), kind);
         if (peak_mm_s > axis_limits.max_velocity * (1.0 + 1e-9)) {

@@ -44,10 +44,12 @@ void SpindleModel::set_speed(double t_s, double rpm) {
     rpm_ = rpm;
 }
 
-double SpindleModel::mean_rpm() const {
-    const double r = config_.ripple_fraction;
-    return std::abs(rpm_) * std::sqrt(1.0 - r * r);
+double mean_rpm(double rpm, const SpindleConfig& config) {
+    const double r = config.ripple_fraction;
+    return std::abs(rpm) * std::sqrt(1.0 - r * r);
 }
+
+double SpindleModel::mean_rpm() const { return nckit::mean_rpm(rpm_, config_); }
 
 // In the turning sense ψ (ψ = θ forward, −θ backward) the ripple reads r'·sin(kψ + φ') with
 // r' = r, φ' = φ forward and r' = −r, φ' = −φ backward.
@@ -120,6 +122,10 @@ bool SpindleCommand::apply(const Io& io) {
 double SpindleCommand::signed_rpm(const SpindleConfig& config) const {
     const double limited = config.max_rpm > 0 ? std::min(rpm, config.max_rpm) : rpm;
     return direction * limited;
+}
+
+double SpindleCommand::mean_rpm(const SpindleConfig& config) const {
+    return nckit::mean_rpm(signed_rpm(config), config);
 }
 
 }  // namespace nckit

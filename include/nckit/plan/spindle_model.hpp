@@ -57,6 +57,12 @@ struct SpindleCommand {
     bool apply(const Io& io);
     //! rpm to turn at, signed (0 stopped), limited to the machine's max_rpm (when set).
     [[nodiscard]] double signed_rpm(const SpindleConfig& config) const;
+    //! rpm it turns at on average, unsigned: signed_rpm slowed by the ripple (mean_rpm below).
+    [[nodiscard]] double mean_rpm(const SpindleConfig& config) const;
 };
+
+//! rpm averaged over a turn of a spindle commanded `rpm` (either sign): a ripple of fraction r
+//! lengthens each turn by 1/sqrt(1 − r²).
+[[nodiscard]] double mean_rpm(double rpm, const SpindleConfig& config);
 
 }  // namespace nckit
