@@ -9,6 +9,8 @@ packages=(
   libeigen3-dev libmuparser-dev libcpp-httplib-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   python3
+  # dxflib reads the DXF outlines and motifs of nckit pattern.
+  libdxflib-dev
   # GNU time: wall time and peak memory in bench/throughput_vs_linuxcnc.sh.
   time
   # LinuxCNC's rs274 interpreter is the reference the program tests compare against.

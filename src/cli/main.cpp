@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
     nckit::cli::add_crosshatch_verb(app, exit_status);
     nckit::cli::add_eccentric_verb(app, exit_status);
     nckit::cli::add_piston_verb(app, exit_status);
+    nckit::cli::add_pattern_verb(app, exit_status);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

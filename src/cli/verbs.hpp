@@ -14,5 +14,6 @@ void add_notch_verb(CLI::App& app, int& exit_status);
 void add_crosshatch_verb(CLI::App& app, int& exit_status);
 void add_eccentric_verb(CLI::App& app, int& exit_status);
 void add_piston_verb(CLI::App& app, int& exit_status);
+void add_pattern_verb(CLI::App& app, int& exit_status);
 
 }  // namespace nckit::cli

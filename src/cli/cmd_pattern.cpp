@@ -1,0 +1,203 @@
+// nckit pattern JOB.toml: shoe-sole pattern milling. Fits the sole outline, tiles and clips the
+// motif, orders the grooves (drawing order, optimised order, lower bound), writes the program
+// (-o), the drawing (--svg) and reports per size, as text or --json. With a [series] and no
+// --size every size is made and -o / --svg name folders (one file per size). A bad job writes
+// nothing.
+#include <algorithm>
+#include <filesystem>
+#include <optional>
+
+#include <fmt/format.h>
+
+#include "common.hpp"
+#include "partial_file.hpp"
+#include "nckit/process/pattern/pattern_run.hpp"
+#include "nckit/process/pattern/pattern_svg.hpp"
+#include "verbs.hpp"
+
+namespace nckit::cli {
+
+namespace {
+
+using namespace nckit::pattern;
+
+struct PatternOptions {
+    std::string job;
+    std::string machine;
+    std::string outline;
+    std::optional<double> size;
+    bool mirror = false;
+    std::string output;
+    std::string svg;
+    bool json = false;
+};
+
+struct Sole {
+    SoleRun run;
+    std::string name;    //!< file stem: JOB_SIZE[_mirror]
+    std::string program_path;
+    std::string svg_path;
+};
+
+std::string size_text(double size) { return fmt::format("{}", size); }
+
+std::string cost_json(const TourCost& c) {
+    return fmt::format("{{\"air_distance_mm\":{},\"air_time_s\":{},\"reversals\":{},\"reversal_time_s\":{}}}",
+                       c.air_distance_mm, c.air_time_s, c.reversals, c.reversal_time_s);
+}
+
+void print_json(const std::vector<Sole>& soles, const PatternOptions& o) {
+    std::string out = fmt::format("{{\"job\":\"{}\",\"mirror\":{},\"sizes\":[", o.job, o.mirror);
+    for (std::size_t i = 0; i < soles.size(); ++i) {
+        const SoleRun& r = soles[i].run;
+        const Grading& g = r.layout.grading;
+        out += fmt::format(
+            "{}{{\"size\":{},\"mirror\":{},\"scale\":{{\"length\":{},\"width\":{}}},\"motif_instances\":{},\"cuts\":{},"
+            "\"cut_length_mm\":{},\"outline_fit_error_mm\":{},\"outline_control_points\":{},\"border_offset_error_mm\":{},"
+            "\"drawing_order\":{},\"optimised_order\":{},\"bound\":{{\"air_distance_mm\":{},\"air_time_s\":{}}},"
+            "\"gap_to_bound\":{{\"air_distance\":{},\"air_time\":{}}},\"z_air_time_s\":{},"
+            "\"order_search\":{{\"passes\":{},\"evaluations\":{},\"budget_spent\":{}}},"
+            "\"planned\":{{\"cycle_time_s\":{},\"air_time_s\":{},\"cut_time_s\":{}}},\"program\":{},\"svg\":{}}}",
+            i == 0 ? "" : ",", g.size, g.mirror, g.scale_x, g.scale_y, r.layout.motif_instances, r.layout.cuts.size(),
+            r.cut_length_mm, r.layout.fit_error_mm, r.layout.control_points, r.layout.border_offset_error_mm,
+            cost_json(r.drawing), cost_json(r.optimised), r.bound_distance_mm, r.bound_time_s,
+            r.bound_distance_mm > 0 ? r.optimised.air_distance_mm / r.bound_distance_mm - 1 : 0.0,
+            r.bound_time_s > 0 ? r.optimised.air_time_s / r.bound_time_s - 1 : 0.0, r.z_air_time_s, r.search.passes,
+            r.search.evaluations, r.search.budget_spent, r.planned_cycle_s, r.planned_air_s, r.planned_cut_s,
+            soles[i].program_path.empty() ? "null" : "\"" + soles[i].program_path + "\"",
+            soles[i].svg_path.empty() ? "null" : "\"" + soles[i].svg_path + "\"");
+    }
+    out += "]}\n";
+    fmt::print("{}", out);
+}
+
+void print_text(const std::vector<Sole>& soles) {
+    for (const Sole& sole : soles) {
+        const SoleRun& r = sole.run;
+        const Grading& g = r.layout.grading;
+        fmt::print("{}: size {}{}, scale {:.5f} x {:.5f}; {} grooves ({:.1f} mm) from {} motif places\n", sole.name,
+                   size_text(g.size), g.mirror ? " (mirrored)" : "", g.scale_x, g.scale_y, r.layout.cuts.size(),
+                   r.cut_length_mm, r.layout.motif_instances);
+        fmt::print("  outline fit {:.4f} mm ({} control points), border offset {:.2g} mm\n", r.layout.fit_error_mm,
+                   r.layout.control_points, r.layout.border_offset_error_mm);
+        auto line = [](const char* what, const TourCost& c) {
+            fmt::print("  {:<15} air {:9.1f} mm {:8.2f} s, {:5} reversals ({:.3f} s)\n", what, c.air_distance_mm,
+                       c.air_time_s, c.reversals, c.reversal_time_s);
+        };
+        line("drawing order", r.drawing);
+        line("optimised", r.optimised);
+        fmt::print("  {:<15} air {:9.1f} mm {:8.2f} s (optimised is {:+.1f} % / {:+.1f} % above)\n", "lower bound",
+                   r.bound_distance_mm, r.bound_time_s,
+                   r.bound_distance_mm > 0 ? 100 * (r.optimised.air_distance_mm / r.bound_distance_mm - 1) : 0.0,
+                   r.bound_time_s > 0 ? 100 * (r.optimised.air_time_s / r.bound_time_s - 1) : 0.0);
+        fmt::print("  planned cycle {:.2f} s: air {:.2f} s, plunges and grooves {:.2f} s\n", r.planned_cycle_s,
+                   r.planned_air_s, r.planned_cut_s);
+    }
+}
+
+bool write_file(const std::string& path, const std::string& text) {
+    std::optional<PartialFile> file = PartialFile::create(path);
+    if (!file) return false;
+    file->write(text);
+    return file->commit();
+}
+
+int run_pattern(const PatternOptions& o) {
+    Result<PatternJob> job = load_pattern_job(o.job);
+    if (!job) {
+        print_diagnostics(job.diagnostics());
+        return exit_bad_input;
+    }
+    const std::filesystem::path outline_path = o.outline.empty() ? job->outline : std::filesystem::path(o.outline);
+    Result<OutlinePoints> points = load_outline_points(outline_path);
+    if (!points) {
+        print_diagnostics(points.diagnostics());
+        return exit_bad_input;
+    }
+    std::optional<MachineConfig> machine = load_machine_or_report(o.machine);
+    if (!machine) return exit_bad_input;
+
+    std::vector<std::optional<double>> sizes;
+    const bool series = !o.size && !job->sizes.empty();
+    if (o.size) {
+        sizes.push_back(*o.size);
+    } else if (series) {
+        std::vector<double> all{job->base_size};
+        for (const SeriesSize& s : job->sizes) all.push_back(s.size);
+        std::sort(all.begin(), all.end());
+        all.erase(std::unique(all.begin(), all.end()), all.end());
+        for (double s : all) sizes.emplace_back(s);
+    } else {
+        sizes.emplace_back(std::nullopt);
+    }
+    const std::string stem = std::filesystem::path(o.job).stem().string();
+    std::vector<Sole> soles;
+    for (const std::optional<double>& size : sizes) {
+        Result<Grading> grading = grading_for(*job, size, o.mirror);
+        if (!grading) {
+            print_diagnostics(grading.diagnostics());
+            return exit_bad_input;
+        }
+        std::string name = stem;
+        if (size) name += "_" + size_text(*size);
+        if (o.mirror) name += "_mirror";
+        const std::string title = fmt::format("nckit pattern {}: size {}{}", std::filesystem::path(o.job).filename().string(),
+                                              size ? size_text(*size) : "as digitised", o.mirror ? ", mirrored" : "");
+        Result<SoleRun> run = run_pattern_sole(*job, *points, *grading, *machine, title);
+        if (!run) {
+            print_diagnostics(run.diagnostics());
+            return exit_bad_input;
+        }
+        soles.push_back(Sole{std::move(*run), name, "", ""});
+    }
+    // Everything is computed: only now is anything written.
+    auto place = [&](const std::string& target, const Sole& sole, const char* ext) {
+        if (target.empty()) return std::string();
+        if (!series) return target;
+        return (std::filesystem::path(target) / (sole.name + ext)).string();
+    };
+    for (const std::string* folder : {&o.output, &o.svg}) {
+        if (series && !folder->empty()) {
+            std::error_code ec;
+            std::filesystem::create_directories(*folder, ec);
+            if (ec) {
+                fmt::print(stderr, "{}:0:0: error: cannot create the folder: {}\n", *folder, ec.message());
+                return exit_bad_input;
+            }
+        }
+    }
+    for (Sole& sole : soles) {
+        sole.program_path = place(o.output, sole, ".nc");
+        sole.svg_path = place(o.svg, sole, ".svg");
+        if (!sole.program_path.empty() && !write_file(sole.program_path, sole.run.program)) return exit_bad_input;
+        if (!sole.svg_path.empty() &&
+            !write_file(sole.svg_path, pattern_svg(sole.run, *job, sole.name))) {
+            return exit_bad_input;
+        }
+    }
+    if (o.json) {
+        print_json(soles, o);
+    } else {
+        print_text(soles);
+    }
+    return 0;
+}
+
+}  // namespace
+
+void add_pattern_verb(CLI::App& app, int& exit_status) {
+    auto options = std::make_shared<PatternOptions>();
+    CLI::App* verb = app.add_subcommand("pattern", "Shoe-sole pattern milling: outline, layout, sizes, order, program");
+    verb->add_option("JOB", options->job, "job file (TOML: [pattern], [motif], [lattice], [[region]], [series])")
+        ->required();
+    verb->add_option("--machine", options->machine, "machine file (default: the built-in mill)");
+    verb->add_option("--outline", options->outline, "digitised outline (CSV x_mm,y_mm or DXF) instead of the job's");
+    verb->add_option("--size", options->size, "make this size of the series only");
+    verb->add_flag("--mirror", options->mirror, "the other foot (mirrored across the sole's length)");
+    verb->add_option("-o,--output", options->output, "write the program (a folder when every size is made)");
+    verb->add_option("--svg", options->svg, "draw outline, border, grooves and air moves (a folder for every size)");
+    verb->add_flag("--json", options->json, "print the report as JSON");
+    verb->callback([options, &exit_status] { exit_status = run_pattern(*options); });
+}
+
+}  // namespace nckit::cli
