@@ -180,7 +180,10 @@ OrderResult optimise_tour(const std::vector<CutEnds>& cuts, const OrderCosts& co
                 if (new_cost < old_cost - gain_eps) {
                     std::reverse(t.order.begin() + i, t.order.begin() + j + 1);
                     std::reverse(t.flipped.begin() + i, t.flipped.begin() + j + 1);
-                    for (std::ptrdiff_t q = i; q <= j; ++q) t.flipped[static_cast<std::size_t>(q)] ^= 1;
+                    for (std::ptrdiff_t q = i; q <= j; ++q) {
+                        char& f = t.flipped[static_cast<std::size_t>(q)];
+                        f = static_cast<char>(f == 0 ? 1 : 0);
+                    }
                     improved = true;
                 }
             }
@@ -218,7 +221,7 @@ OrderResult optimise_tour(const std::vector<CutEnds>& cuts, const OrderCosts& co
                 if (best_rev) {
                     std::reverse(run_order.begin(), run_order.end());
                     std::reverse(run_flip.begin(), run_flip.end());
-                    for (char& f : run_flip) f ^= 1;
+                    for (char& f : run_flip) f = static_cast<char>(f == 0 ? 1 : 0);
                 }
                 t.order.erase(t.order.begin() + i, t.order.begin() + j + 1);
                 t.flipped.erase(t.flipped.begin() + i, t.flipped.begin() + j + 1);

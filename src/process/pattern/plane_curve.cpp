@@ -165,7 +165,7 @@ std::vector<Vec2> polyline(const PlaneCurve& curve, double deviation_mm, std::si
     }
     steps = std::clamp<std::size_t>(steps, 1, max_points - 1);
     out.reserve(steps + 1);
-    for (std::size_t i = 0; i <= steps; ++i) out.push_back(point_at(curve, end * static_cast<double>(i) / steps));
+    for (std::size_t i = 0; i <= steps; ++i) out.push_back(point_at(curve, end * static_cast<double>(i) / static_cast<double>(steps)));
     return out;
 }
 
