@@ -54,6 +54,9 @@ std::optional<ModalGroup> group_of(GCode code) {
             return ModalGroup::work_system;
         case g(61): case g(64): return ModalGroup::path_control;
         case g(7): case g(8): return ModalGroup::diameter;
+        case g(51): return ModalGroup::scaling;
+        case g(50, 1): case g(51, 1): return ModalGroup::mirror;
+        case g(68): case g(69): return ModalGroup::rotation;
         default: return std::nullopt;
     }
 }

@@ -28,6 +28,9 @@ enum class ModalGroup {
     work_system,    // G54..G59
     path_control,   // G61 G64
     diameter,       // G7 G8
+    scaling,        // G51 (G50 alone cancels it: see program_transform.hpp)
+    mirror,         // G50.1 G51.1
+    rotation,       // G68 G69
     count
 };
 constexpr std::size_t group_count = static_cast<std::size_t>(ModalGroup::count);

@@ -84,8 +84,12 @@ std::optional<Diagnostic> Executor::run(const Block& block, std::vector<Move>& o
     std::optional<Offsets> saved_offsets;
     if (may_set_offsets) saved_offsets = offsets_;
     AxisVector saved_position = position_;
+    const ProgramTransform saved_transform = transform_;
+    const AxisVector saved_programmed = programmed_;
     std::size_t saved_size = out.size();
     auto fail = [&](Diagnostic d) {
+        transform_ = saved_transform;
+        programmed_ = saved_programmed;
         modal_ = saved_modal;
         if (saved_offsets) offsets_ = *saved_offsets;
         position_ = saved_position;
@@ -98,7 +102,8 @@ std::optional<Diagnostic> Executor::run(const Block& block, std::vector<Move>& o
     emit_mcodes(out, false);
     if (auto e = dwell(out)) return fail(*e);
     if (auto e = set_coordinates()) return fail(*e);
-    if (auto e = move(out)) return fail(*e);
+    if (auto e = set_transform()) return fail(*e);
+    if (auto e = transformed_move(out)) return fail(*e);
     emit_mcodes(out, true);
     program_end = words_.has_m(2) || words_.has_m(30);
     if (program_end) parts_done_ += 1;

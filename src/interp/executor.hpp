@@ -6,6 +6,7 @@
 #include "block_words.hpp"
 #include "macro/variables.hpp"
 #include "modal_state.hpp"
+#include "program_transform.hpp"
 #include "nckit/core/machine.hpp"
 #include "nckit/interp/interpreter.hpp"
 
@@ -47,6 +48,11 @@ private:
     std::optional<Diagnostic> dwell(std::vector<Move>& out);
     std::optional<Diagnostic> set_coordinates();
 
+    // Programmable mirror, scaling and rotation (executor_transform.cpp): the block's G51 G51.1
+    // G50.1 G68 G69 (G50 alone), and the block's motion mapped through them.
+    std::optional<Diagnostic> set_transform();
+    std::optional<Diagnostic> transformed_move(std::vector<Move>& out);
+
     // Motion (executor_motion.cpp).
     std::optional<Diagnostic> move(std::vector<Move>& out);
     std::optional<Diagnostic> home(std::vector<Move>& out);
@@ -81,6 +87,8 @@ private:
     ModalState modal_;
     Offsets offsets_;
     AxisVector position_;  //!< machine coordinates, mm / deg
+    ProgramTransform transform_;
+    AxisVector programmed_;  //!< position_ before the transform (while one is active)
 
     const Block* block_ = nullptr;  //!< the block being run
     BlockWords words_;

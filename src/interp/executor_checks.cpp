@@ -55,7 +55,9 @@ std::optional<Diagnostic> Executor::check_words() {
 
     const bool dwell = non_modal == g(4);
     const bool axes_for_setting = non_modal == g(10) || non_modal == g(28) || non_modal == g(52) ||
-                                  non_modal == g(92) || non_modal == g(50);
+                                  non_modal == g(92) || non_modal == g(50) ||
+                                  ProgramTransform::sets_transform(words_);
+    const bool transform = ProgramTransform::sets_transform(words_);
     if (axes_for_setting && explicit_motion >= 0 && block_has_axis_words()) {
         return error(words_.group_column(ModalGroup::motion), "modal-conflict",
                      "two G codes in this block both use the axis words");
@@ -95,6 +97,7 @@ std::optional<Diagnostic> Executor::check_words() {
         }
         switch (c) {
             case 'I': case 'J': case 'K':
+                if (transform && words_.group(ModalGroup::scaling) == g(51)) continue;
                 if (is_arc(motion_) && moves) {
                     if (!offset_in_plane(c, plane)) {
                         return error(word.column, "bad-arc",
@@ -107,6 +110,7 @@ std::optional<Diagnostic> Executor::check_words() {
                 return unused(fmt::format("{} word with no G2/G3 to use it", c));
             case 'R':
                 if (is_arc(motion_) && moves) continue;
+                if (words_.group(ModalGroup::rotation) == g(68)) continue;
                 return unused("R word with no G2/G3 to use it");
             case 'E':
                 if (is_thread(motion_) && moves) continue;
@@ -117,6 +121,7 @@ std::optional<Diagnostic> Executor::check_words() {
                 return error(word.column, "unsupported-word", "D word is not supported (except as G96 D<max rpm>)");
             case 'P':
                 if (dwell || non_modal == g(10) || words_.group(ModalGroup::path_control) == g(64)) continue;
+                if (words_.group(ModalGroup::scaling) == g(51)) continue;
                 return unused("P word with no G4, G10 or G64 to use it");
             case 'Q':
                 // LinuxCNC's G64 Q (naive CAM tolerance) is accepted; nckit's planner needs only P.
