@@ -2,7 +2,7 @@
 O0020 (ONE GROOVE MOTIF AS A SUBPROGRAM, PLACED BY G52 + M98, MIRRORED, SCALED AND ROTATED)
 ( O0201 cuts a chevron and an arc round its local origin. The main program places it with   )
 ( G52 four times: as drawn; mirrored in X - G51.1 X0, the G3 becomes a G2 -; at half size      )
-( - G51 P0.5 -; turned 30 degrees - G68 R30 -; and then a ring of six copies from a WHILE loop    )
+( - G51 I0.5 J0.5, Z not scaled -; turned 30 degrees - G68 R30 -; and then a ring of six copies from a WHILE loop    )
 ( with G68 R[#1] about the ring's centre, mirrored in Y as well - nesting: mirror, then         )
 ( rotation -. G50.1, G50 and G69 cancel each one.                                                )
 N10 G21 G17 G90 G54 G94
@@ -15,7 +15,7 @@ N70 G51.1 X0
 N80 M98 P201
 N90 G50.1 X0
 N100 G52 X60. Y40.
-N110 G51 X0 Y0 P0.5
+N110 G51 X0 Y0 I0.5 J0.5
 N120 M98 P201
 N130 G50
 N140 G52 X-60. Y-20.
