@@ -122,7 +122,10 @@ with tempfile.TemporaryDirectory() as tmp:
     with open(os.path.join(tmp, "motif.dxf"), "w") as f:
         f.write(dxf(["0\nLINE\n8\n0\n10\n-4.0\n20\n-2.0\n30\n0\n11\n0.0\n21\n2.0\n31\n0\n",
                      "0\nLINE\n8\n0\n10\n0.0\n20\n2.0\n30\n0\n11\n4.0\n21\n-2.0\n31\n0\n",
-                     "0\nARC\n8\n0\n10\n0.0\n20\n-6.0\n30\n0\n40\n3.0\n50\n30.0\n51\n150.0\n"]))
+                     "0\nARC\n8\n0\n10\n0.0\n20\n-6.0\n30\n0\n40\n3.0\n50\n30.0\n51\n150.0\n",
+                     "0\nSPLINE\n8\n0\n70\n8\n71\n3\n72\n0\n73\n0\n74\n5\n"
+                     + "".join(f"11\n{x}\n21\n{y}\n31\n0.0\n"
+                               for x, y in ((-5.0, 4.0), (-2.5, 5.0), (0.0, 4.0), (2.5, 3.0), (5.0, 4.0)))]))
     shutil.copy(os.path.join(example, "sole_outline.csv"), tmp)
     text = open(job).read()
     text = re.sub(r"\[motif\]\n(.*\n)*?\n", '[motif]\ndxf = "motif.dxf"\n\n', text, count=1)
