@@ -41,13 +41,29 @@ struct Sole {
 
 std::string size_text(double size) { return fmt::format("{}", size); }
 
+//! A JSON string: quotes, backslashes and control characters escaped.
+std::string quoted(const std::string& text) {
+    std::string out = "\"";
+    for (char c : text) {
+        if (c == '"' || c == '\\') {
+            out += '\\';
+            out += c;
+        } else if (static_cast<unsigned char>(c) < 0x20) {
+            out += fmt::format("\\u{:04x}", static_cast<int>(c));
+        } else {
+            out += c;
+        }
+    }
+    return out + "\"";
+}
+
 std::string cost_json(const TourCost& c) {
     return fmt::format("{{\"air_distance_mm\":{},\"air_time_s\":{},\"reversals\":{},\"reversal_time_s\":{}}}",
                        c.air_distance_mm, c.air_time_s, c.reversals, c.reversal_time_s);
 }
 
 void print_json(const std::vector<Sole>& soles, const PatternOptions& o) {
-    std::string out = fmt::format("{{\"job\":\"{}\",\"mirror\":{},\"sizes\":[", o.job, o.mirror);
+    std::string out = fmt::format("{{\"job\":{},\"mirror\":{},\"sizes\":[", quoted(o.job), o.mirror);
     for (std::size_t i = 0; i < soles.size(); ++i) {
         const SoleRun& r = soles[i].run;
         const Grading& g = r.layout.grading;
@@ -64,8 +80,8 @@ void print_json(const std::vector<Sole>& soles, const PatternOptions& o) {
             r.bound_distance_mm > 0 ? r.optimised.air_distance_mm / r.bound_distance_mm - 1 : 0.0,
             r.bound_time_s > 0 ? r.optimised.air_time_s / r.bound_time_s - 1 : 0.0, r.z_air_time_s, r.search.passes,
             r.search.evaluations, r.search.budget_spent, r.planned_cycle_s, r.planned_air_s, r.planned_cut_s,
-            soles[i].program_path.empty() ? "null" : "\"" + soles[i].program_path + "\"",
-            soles[i].svg_path.empty() ? "null" : "\"" + soles[i].svg_path + "\"");
+            soles[i].program_path.empty() ? "null" : quoted(soles[i].program_path),
+            soles[i].svg_path.empty() ? "null" : quoted(soles[i].svg_path));
     }
     out += "]}\n";
     fmt::print("{}", out);

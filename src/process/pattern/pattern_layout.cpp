@@ -33,8 +33,7 @@ Result<Grading> grading_for(const PatternJob& job, std::optional<double> size, b
         return g;
     }
     g.size = *size;
-    if (job.sizes.empty() && *size == job.base_size && job.base_size != 0) return g;
-    if (*size == job.base_size) return g;
+    if (*size == job.base_size && !job.sizes.empty()) return g;  // the outline as digitised
     for (const SeriesSize& s : job.sizes) {
         if (s.size != *size) continue;
         if (s.scale) {
