@@ -1,6 +1,7 @@
 // Grading, tiling and clipping of one sole.
 #include "nckit/process/pattern/pattern_layout.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -21,6 +22,63 @@ double depth_at(const PatternJob& job, const Box& outline_box, Vec2 p) {
         if (pct >= r.from_pct && pct <= r.to_pct) return r.depth_mm;
     }
     return job.depth_mm;
+}
+
+// Parameters where the curve crosses one of the lines x = X (region boundaries): sign changes
+// on 64 steps, each solved by bisection on the exact curve.
+std::vector<double> crossings_of_lines(const PlaneCurve& curve, const std::vector<double>& xs) {
+    std::vector<double> out;
+    const double end = parameter_end(curve);
+    constexpr int steps = 64;
+    for (double x : xs) {
+        auto f = [&](double s) { return point_at(curve, s).x - x; };
+        double s0 = 0, f0 = f(0);
+        for (int k = 1; k <= steps; ++k) {
+            const double s1 = end * k / steps;
+            const double f1 = f(s1);
+            if ((f0 < 0) != (f1 < 0) && f0 != 0 && f1 != 0) {
+                double lo = s0, hi = s1;
+                for (int it = 0; it < 200 && hi - lo > 1e-15 * std::max(1.0, end); ++it) {
+                    const double mid = 0.5 * (lo + hi);
+                    if ((f(mid) < 0) == (f0 < 0)) {
+                        lo = mid;
+                    } else {
+                        hi = mid;
+                    }
+                }
+                out.push_back(0.5 * (lo + hi));
+            }
+            s0 = s1;
+            f0 = f1;
+        }
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+// A clipped piece split where it crosses a region boundary (no part shorter than min_mm), each
+// part at the depth of its own region.
+void add_cuts(const ClippedCurve& piece, const PatternJob& job, const Box& outline_box, double min_mm,
+              const Affine& to_program, std::vector<Cut>& out) {
+    std::vector<double> lines;
+    for (const DepthRegion& r : job.regions) {
+        for (double pct : {r.from_pct, r.to_pct}) lines.push_back(outline_box.low.x + pct / 100.0 * outline_box.size().x);
+    }
+    const double end = parameter_end(piece.curve);
+    std::vector<double> bounds{0.0};
+    for (double s : crossings_of_lines(piece.curve, lines)) {
+        if (curve_length(sub_curve(piece.curve, bounds.back(), s)) >= min_mm &&
+            curve_length(sub_curve(piece.curve, s, end)) >= min_mm) {
+            bounds.push_back(s);
+        }
+    }
+    bounds.push_back(end);
+    for (std::size_t k = 0; k + 1 < bounds.size(); ++k) {
+        const PlaneCurve part = bounds.size() == 2 ? piece.curve : sub_curve(piece.curve, bounds[k], bounds[k + 1]);
+        const Vec2 mid = point_at(part, 0.5 * parameter_end(part));
+        out.push_back(Cut{transformed(part, to_program), depth_at(job, outline_box, mid), k == 0 && piece.start_on_border,
+                          k + 2 == bounds.size() && piece.end_on_border});
+    }
 }
 
 }  // namespace
@@ -144,10 +202,8 @@ Result<SoleLayout> lay_out_sole(const PatternJob& job, const OutlinePoints& poin
             if (!check.overlaps(bb, 1e-9)) continue;
             ++layout.motif_instances;
             for (const PlaneCurve& curve : job.motif) {
-                for (ClippedCurve& piece : clip_to_border(transformed(curve, map), clip, job.min_cut_mm)) {
-                    const Vec2 mid = point_at(piece.curve, 0.5 * parameter_end(piece.curve));
-                    layout.cuts.push_back(Cut{transformed(piece.curve, to_program), depth_at(job, graded_box, mid),
-                                              piece.start_on_border, piece.end_on_border});
+                for (const ClippedCurve& piece : clip_to_border(transformed(curve, map), clip, job.min_cut_mm)) {
+                    add_cuts(piece, job, graded_box, job.min_cut_mm, to_program, layout.cuts);
                 }
             }
         }

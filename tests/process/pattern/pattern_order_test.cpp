@@ -191,6 +191,32 @@ TEST(PatternLayout, ScaledSizeEqualsTheScaledDrawingWhenMotifsScale) {
     expect_same(ends_of(*big, Affine{}), ends_of(*base, scale));
 }
 
+TEST(PatternLayout, GroovesAreSplitAtRegionEdgesAndCutAtTheirRegionsDepth) {
+    const std::string text = std::string(job_text) + "[[region]]\nfrom_pct = 0\nto_pct = 40\ndepth_mm = 2.0\n";
+    Result<PatternJob> job = parse_pattern_job(text, "job.toml");
+    ASSERT_TRUE(job);
+    Result<SoleLayout> layout = lay_out_sole(*job, sole_points(), *grading_for(*job, 40.0, false));
+    ASSERT_TRUE(layout);
+    const Box box = bounding_box(PlaneCurve(layout->outline));
+    const double edge = box.low.x + 0.4 * box.size().x;
+    int deep = 0, crossing_split = 0;
+    for (const Cut& cut : layout->cuts) {
+        for (const Vec2& p : polyline(cut.curve, 0.001)) {
+            if (cut.depth_mm == 2.0) {
+                EXPECT_LE(p.x, edge + 1e-9);
+            } else {
+                EXPECT_EQ(cut.depth_mm, 1.0);
+                EXPECT_GE(p.x, edge - 1e-9);
+            }
+        }
+        const double x0 = point_at(cut.curve, 0).x, x1 = point_at(cut.curve, parameter_end(cut.curve)).x;
+        if (std::abs(x0 - edge) < 1e-9 || std::abs(x1 - edge) < 1e-9) ++crossing_split;
+        deep += cut.depth_mm == 2.0 ? 1 : 0;
+    }
+    EXPECT_GT(deep, 20);
+    EXPECT_GT(crossing_split, 4);  // grooves really were split at the edge
+}
+
 TEST(PatternRun, ProgramStartsOnWholeStepsAndThePlannerAgreesWithTheAirModel) {
     Result<PatternJob> job = parse_pattern_job(job_text, "job.toml");
     Result<MachineConfig> machine = stepper_mill();

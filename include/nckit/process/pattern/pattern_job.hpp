@@ -13,8 +13,9 @@
 
 namespace nckit::pattern {
 
-//! A band across the sole's length with its own groove depth: a cut belongs to the band that
-//! holds its midpoint. Positions in percent of the outline's length (along X, from its low end).
+//! A band across the sole's length with its own groove depth: grooves are split where they
+//! cross a band's edge, each part cut at the depth of the first band that holds its midpoint.
+//! Positions in percent of the outline's length (along X, from its low end).
 struct DepthRegion {
     double from_pct = 0;
     double to_pct = 100;
