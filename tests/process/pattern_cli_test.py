@@ -135,6 +135,9 @@ with tempfile.TemporaryDirectory() as tmp:
     assert from_dxf["cuts"] == sole["cuts"], (from_dxf["cuts"], sole["cuts"])
     assert abs(from_dxf["cut_length_mm"] - sole["cut_length_mm"]) < 1e-6
 
+    example_dxf = pattern(os.path.join(example, "sole_pattern_dxf_motif.toml"), "--size", "40")["sizes"][0]
+    assert example_dxf["cuts"] == sole["cuts"] and abs(example_dxf["cut_length_mm"] - sole["cut_length_mm"]) < 1e-6
+
     # Bad input: located error, exit 2, nothing written.
     def bad(args, where, message):
         out = os.path.join(tmp, "bad.nc")
