@@ -76,6 +76,20 @@ double RepetitiveLearning::next(double error_mm) {
     return c;
 }
 
+void RepetitiveLearning::retune(const ZpetcFeedforward& inverse, double gain) {
+    if (!(gain > 0.0 && gain < 2.0)) throw std::invalid_argument("learning gain must lie in (0, 2)");
+    inverse_taps_ = inverse.taps();
+    settings_.gain = gain;
+}
+
+void RepetitiveLearning::reset(std::int64_t ignored_ticks) {
+    std::fill(corrections_.begin(), corrections_.end(), 0.0);
+    std::fill(sums_.begin(), sums_.end(), 0.0);
+    errors_ = {};
+    tick_ = 0;
+    ignored_ticks_ = std::max<std::int64_t>(ignored_ticks, 0);
+}
+
 RepetitiveLearning::Contraction RepetitiveLearning::contraction(const drive::ServoDiscretisation& plant) const {
     auto factor = [&](double w, bool with_low_pass) {
         std::complex<double> inverse = 0.0;

@@ -100,6 +100,13 @@ public:
     //! to add to this tick's command, mm.
     double next(double error_mm);
 
+    //! Takes the inverse's taps and `gain` (in (0, 2); else std::invalid_argument) from here on,
+    //! keeping what has been learned: a servo thread whose model or speed changed. Allocates nothing.
+    void retune(const ZpetcFeedforward& inverse, double gain);
+    //! Forgets everything learned (the spindle reversed, say); the first `ignored_ticks` after it
+    //! are not learned from. Allocates nothing.
+    void reset(std::int64_t ignored_ticks);
+
     //! sup over frequency of |Q (1 - gain G Z)| for the axis `plant` at the nominal tick (< 1:
     //! the learning converges) and the same at the learned harmonics alone (the factor the error
     //! there shrinks by per turn, once the transients have passed).

@@ -20,26 +20,9 @@
 #include "nckit/core/result.hpp"
 #include "nckit/core/source_location.hpp"
 #include "nckit/process/fast_tool_servo.hpp"
+#include "nckit/process/stroke_reference.hpp"
 
 namespace nckit {
-
-//! The fast axis's zero along Z: (max_θ r + min_θ r) / 2 of the cam table at evenly spaced Z,
-//! each extreme refined by a parabola through the best sample of the turn and its neighbours,
-//! and a natural cubic spline between, so the slide's path is smooth (its curvature continuous)
-//! even where the drawing changes formula.
-class StrokeReference {
-public:
-    //! Over the table's Z range at `points` (>= 2) values of Z, the turn sampled every
-    //! `theta_step_deg`.
-    StrokeReference(const cam::CamTable& table, std::size_t points, double theta_step_deg = 0.25);
-
-    //! mm, the radius the fast axis's mid-stroke cuts at `z_mm`.
-    [[nodiscard]] double radius_mm(double z_mm) const { return spline_.value(z_mm); }
-    [[nodiscard]] const cam::NaturalSpline& spline() const { return spline_; }
-
-private:
-    cam::NaturalSpline spline_;
-};
 
 //! The largest |r − reference| over the turned surface: what the fast axis must travel.
 struct StrokeFit {
