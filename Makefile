@@ -4,7 +4,7 @@ NCKIT      := $(BUILD)/src/nckit
 DEMO       := examples/01_mill_pocket.ngc
 JOBS       ?= 2
 
-.PHONY: all deps configure build run test test-unit test-asan bench clean
+.PHONY: all deps configure build run test test-unit test-asan bench clean hal hal-install
 
 all: build
 
@@ -48,6 +48,13 @@ test-asan: deps
 
 bench: build
 	@bash bench/run_all.sh
+
+# The LinuxCNC HAL components (docs/hal-cam.md); hal-install puts them where loadrt looks.
+hal: configure
+	@cmake --build --preset release -j $(JOBS) --target hal
+
+hal-install: configure
+	@cmake --build --preset release -j $(JOBS) --target hal-install
 
 clean:
 	@rm -rf build

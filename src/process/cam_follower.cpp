@@ -18,6 +18,9 @@ constexpr double retune_speed_fraction = 0.02;
 //! Below this speed (counts per tick) the spindle counts as stopped: no learning, no re-tune.
 constexpr double stopped_counts_per_tick = 0.05;
 
+//! Turns the revolution input may reach.
+constexpr double max_revolutions = 1099511627776.0;
+
 std::int64_t modulo(std::int64_t a, std::int64_t n) {
     const std::int64_t r = a % n;
     return r < 0 ? r + n : r;
@@ -149,7 +152,8 @@ void CamFollower::step(const CamFollowerInput& in, const CamFollowerSettings& se
         whole = position_;
     } else {
         double revolutions = in.revolutions;
-        if (!std::isfinite(revolutions)) {
+        // Beyond 2^40 turns (35 years at 1000 rpm) the counts no longer fit the arithmetic.
+        if (!std::isfinite(revolutions) || std::abs(revolutions) > max_revolutions) {
             out.input_fault = true;
             revolutions = last_position_ / counts_;
         }
@@ -162,6 +166,9 @@ void CamFollower::step(const CamFollowerInput& in, const CamFollowerSettings& se
         whole = static_cast<std::int64_t>(std::floor(position));
         out.index_fault = false;
     }
+    // More than a turn per period is no speed a cam can follow (a counter reset, say): the
+    // preview is bounded to a turn either way.
+    moved = std::clamp(moved, -static_cast<double>(counts_), static_cast<double>(counts_));
     speed_ = started_ ? speed_ + speed_filter * (moved - speed_) : 0.0;
     out.counts_per_tick = speed_;
     out.angle_deg = 360.0 * in_turn / counts_;

@@ -1,0 +1,42 @@
+"""The piston's profile error from piston_lathe.hal's samples beside nckit's simulated figure.
+
+  profile_error.py SAMPLES.txt NCKIT.json
+
+SAMPLES: halsampler -t lines `tag counts z wanted command position error`. The cut is every
+sample from the first at which Z has left the crown; the error there is the axis position minus
+where the cam wants it (nckit_cam's error pin): its peak to valley and RMS in um, as
+`nckit piston` reports them over the turned surface. Prints one JSON object.
+"""
+import json
+import math
+import sys
+
+
+def main():
+    samples, nckit_json = sys.argv[1], sys.argv[2]
+    errors = []
+    first_z = None
+    with open(samples) as f:
+        for line in f:
+            fields = line.split()
+            if len(fields) != 7:
+                if line.strip() == "overrun":
+                    sys.exit(f"{samples}: the sampler overran: samples were lost")
+                continue
+            z, error = float(fields[2]), float(fields[6])
+            first_z = z if first_z is None else first_z
+            if z > first_z:
+                errors.append(error * 1e3)
+    if len(errors) < 1000:
+        sys.exit(f"{samples}: only {len(errors)} samples of the cut")
+    with open(nckit_json) as f:
+        simulated = json.load(f)["profile_error_um"]["feedforward"]
+    pv = max(errors) - min(errors)
+    rms = math.sqrt(sum(e * e for e in errors) / len(errors))
+    print(json.dumps({"hal_feedforward_pv_um": round(pv, 4), "hal_feedforward_rms_um": round(rms, 4),
+                      "nckit_feedforward_pv_um": round(simulated["pv"], 4),
+                      "nckit_feedforward_rms_um": round(simulated["rms"], 4), "cut_samples": len(errors)}))
+
+
+if __name__ == "__main__":
+    main()
