@@ -4,7 +4,7 @@
 
 Cost: the example's spindle (sim_encoder, encoder, 2500 rpm, 360 counts) and Z feeding per turn
 drive nckit-cam.0 in a 66.666 us thread; its `call-ns` pin (the function's own duration by
-rtapi_get_time, the two clock reads included) is sampled every period for --calls periods, once
+CPU clocks scaled to ns, the two clock reads included) is sampled every period for --calls periods, once
 with the cam alone and once with feedforward and learning on; prints the median, the 99.9th
 percentile and the worst. Then runs examples/linuxcnc/piston_lathe/run.sh. Needs the modules
 installed (cmake --build build/release --target hal-install).

@@ -7,7 +7,7 @@ Cases:
               at that encoder count and Z within 1e-6 mm
   feedforward with nckit_servo in the loop and feedforward on, the profile error over the last
               turns matches `nckit piston --json`'s feedforward figure for the job within 10 %
-  backwards   the encoder runs forwards, then backwards: outputs stay exact, no fault
+  backwards   the encoder runs backwards (negative counts), then forwards: outputs stay exact, no fault
   index       an index pulse at a wrong count: the index fault is raised and held, the turn is
               not re-synchronised to it (outputs stay exact), reset clears the fault
   z_outside   Z sweeps below and beyond the table: the edge value is held, z-fault says so
@@ -25,6 +25,9 @@ from halrun_support import make_workdir, read_samples, run_hal  # noqa: E402
 
 TOLERANCE_MM = 1e-6
 COUNTS = 360
+# Sampled in every case (columns 1..5 after halsampler's tag), extras from column 6 on.
+BASE = [("s", "sig:spindle-counts"), ("f", "sig:z-pos"), ("f", "nckit-cam.0.cam"), ("s", "nckit-cam.0.count-in-turn"),
+        ("b", "sig:spindle-index")]
 
 
 def fail(message):
@@ -48,12 +51,30 @@ def run_or_fail(text, workdir, samples_name="samples.txt"):
     return read_samples(path)
 
 
-def check_exact(args, table, rows, workdir, columns=(1, 2, 3)):
-    """rows: tag, counts, z, cam, ...; compares cam with the reference at counts and z."""
+def counts_in_turn(rows, index_column, good=lambda counts: True):
+    """The count since the index at each row, from the sampled counts and index alone: the first
+    rising edge (or an index already high in the first sample) is count 0; later edges re-sync
+    when `good` says the pulse came at a whole turn. Before any index, the count modulo the turn."""
+    zero = None
+    previous = 0
+    out = []
+    for i, row in enumerate(rows):
+        counts, index = int(row[1]), int(row[index_column])
+        if index and not previous and (zero is None or good(counts - zero)):
+            zero = counts
+        previous = index
+        out.append((counts - (zero or 0)) % COUNTS)
+    return out
+
+
+def check_exact(args, table, rows, workdir, index_column):
+    """rows: tag, counts, z, cam, ...; compares cam with the reference at the count since the
+    index (from the sampled index) and z."""
+    turn = counts_in_turn(rows, index_column, lambda moved: moved % COUNTS == 0)
     path = os.path.join(workdir, "exact.txt")
     with open(path, "w") as f:
-        for row in rows:
-            f.write(f"{int(row[columns[0]])} {row[columns[1]]!r} {row[columns[2]]!r}\n")
+        for row, k in zip(rows, turn):
+            f.write(f"{k} {row[2]!r} {row[3]!r}\n")
     out = subprocess.run([args.reference, table, str(COUNTS), path], check=True, capture_output=True, text=True)
     result = json.loads(out.stdout)
     print("reference:", result)
@@ -65,21 +86,21 @@ def check_exact(args, table, rows, workdir, columns=(1, 2, 3)):
     return result
 
 
-def check_count_in_turn(rows, counts_column, turn_column):
-    for row in rows:
-        if int(row[turn_column]) != int(row[counts_column]) % COUNTS:
-            fail(f"count-in-turn {int(row[turn_column])} at encoder count {int(row[counts_column])}")
+def check_count_in_turn(rows, index_column, turn_column):
+    expected = counts_in_turn(rows, index_column, lambda moved: moved % COUNTS == 0)
+    for row, k in zip(rows, expected):
+        if int(row[turn_column]) != k:
+            fail(f"count-in-turn {int(row[turn_column])} at encoder count {int(row[1])}, not {k}")
 
 
 def case_exact(args, workdir):
     table = write_table(args, workdir)
-    sampled = [("s", "sig:spindle-counts"), ("f", "sig:z-pos"), ("f", "nckit-cam.0.cam"),
-               ("s", "nckit-cam.0.count-in-turn"), ("b", "nckit-cam.0.fault")]
+    sampled = BASE + [("b", "nckit-cam.0.fault")]
     # Z fed 0.1 mm per turn from 20 mm: 4000 samples are 11 turns, Z 20 .. 21.1 mm.
     rows = run_or_fail(spindle_graph(table, z_offset_mm=20.0, z_mm_rev=0.1, sampled=sampled, samples=4000), workdir)
-    check_exact(args, table, rows, workdir)
-    check_count_in_turn(rows, 1, 4)
-    if any(row[5] for row in rows):
+    check_exact(args, table, rows, workdir, 5)
+    check_count_in_turn(rows, 5, 4)
+    if any(row[6] for row in rows):
         fail("a fault was raised at a steady speed inside the table")
     moved = {int(row[1]) % COUNTS for row in rows}
     if len(moved) != COUNTS:
@@ -89,19 +110,19 @@ def case_exact(args, workdir):
 
 def case_backwards(args, workdir):
     table = write_table(args, workdir)
-    sampled = [("s", "sig:spindle-counts"), ("f", "sig:z-pos"), ("f", "nckit-cam.0.cam"),
-               ("s", "nckit-cam.0.count-in-turn"), ("b", "nckit-cam.0.fault"), ("f", "nckit-cam.0.command")]
-    after = "loadusr -w sleep 0.15\nsetp sim-encoder.0.speed -41.6666\nloadusr -w sleep 0.3"
-    rows = run_or_fail(spindle_graph(table, z_offset_mm=30.0, sampled=sampled, samples=9000,
+    sampled = BASE + [("b", "nckit-cam.0.fault"), ("f", "sig:fts-cmd")]
+    # Backwards from the start (negative counts), then forwards.
+    after = "loadusr -w sleep 0.2\nsetp sim-encoder.0.speed 41.6666\nloadusr -w sleep 0.2"
+    rows = run_or_fail(spindle_graph(table, rev_s=-41.6666, z_offset_mm=30.0, sampled=sampled, samples=9000,
                                      after_start=after, cam_setup="setp nckit-cam.0.feedforward-enable 1"), workdir)
     steps = [int(b[1]) - int(a[1]) for a, b in zip(rows, rows[1:])]
     if not (max(steps) == 1 and min(steps) == -1):
         fail(f"the encoder did not run both ways (count steps {min(steps)} .. {max(steps)})")
-    check_exact(args, table, rows, workdir)
-    check_count_in_turn(rows, 1, 4)
-    if any(row[5] for row in rows):
+    check_exact(args, table, rows, workdir, 5)
+    check_count_in_turn(rows, 5, 4)
+    if any(row[6] for row in rows):
         fail("a fault was raised while the spindle reversed")
-    if not all(abs(row[6]) < 0.5 for row in rows):
+    if not all(abs(row[7]) < 0.5 for row in rows):
         fail("the command left the stroke while the spindle reversed")
     print(f"backwards: {len(rows)} samples, counts {int(min(r[1] for r in rows))} .. {int(max(r[1] for r in rows))}")
 
@@ -123,22 +144,21 @@ def case_index(args, workdir):
         "net wrong-index wcomp.0.out => or2.0.in1",
         "net spindle-index or2.0.out => nckit-cam.0.spindle-index",
     ]
-    sampled = [("s", "sig:spindle-counts"), ("f", "sig:z-pos"), ("f", "nckit-cam.0.cam"),
-               ("s", "nckit-cam.0.count-in-turn"), ("b", "nckit-cam.0.index-fault"), ("b", "sig:spindle-index")]
+    sampled = BASE + [("b", "nckit-cam.0.index-fault")]
     after = "loadusr -w sleep 0.35\nsetp nckit-cam.0.reset 1\nloadusr -w sleep 0.05\nsetp nckit-cam.0.reset 0\nloadusr -w sleep 0.1"
     rows = run_or_fail(spindle_graph(table, z_offset_mm=10.0, sampled=sampled, samples=8000, index_net=index_net,
                                      after_start=after), workdir)
-    check_exact(args, table, rows, workdir)
-    check_count_in_turn(rows, 1, 4)
-    first_fault = next((i for i, row in enumerate(rows) if row[5]), None)
+    check_exact(args, table, rows, workdir, 5)
+    check_count_in_turn(rows, 5, 4)
+    first_fault = next((i for i, row in enumerate(rows) if row[6]), None)
     if first_fault is None:
         fail("the index at a wrong count raised no fault")
     if int(rows[first_fault][1]) != wrong:
         fail(f"the index fault came at count {int(rows[first_fault][1])}, not at the wrong index's {wrong}")
-    cleared = next((i for i in range(first_fault, len(rows)) if not rows[i][5]), None)
+    cleared = next((i for i in range(first_fault, len(rows)) if not rows[i][6]), None)
     if cleared is None:
         fail("reset did not clear the index fault")
-    if not all(rows[i][5] for i in range(first_fault, cleared)):
+    if not all(rows[i][6] for i in range(first_fault, cleared)):
         fail("the index fault did not hold until reset")
     if cleared - first_fault < COUNTS:
         fail("the index fault cleared before reset")
@@ -147,19 +167,18 @@ def case_index(args, workdir):
 
 def case_z_outside(args, workdir):
     table = write_table(args, workdir)
-    sampled = [("s", "sig:spindle-counts"), ("f", "sig:z-pos"), ("f", "nckit-cam.0.cam"),
-               ("b", "nckit-cam.0.z-fault"), ("f", "nckit-cam.0.command")]
+    sampled = BASE + [("b", "nckit-cam.0.z-fault"), ("f", "sig:fts-cmd")]
     # Z from -5 mm at 20 mm per turn: through the table (0 .. 50 mm) and 20 mm beyond it.
     rows = run_or_fail(spindle_graph(table, z_offset_mm=-5.0, z_mm_rev=20.0, sampled=sampled, samples=1400,
                                      cam_setup="setp nckit-cam.0.feedforward-enable 1"), workdir)
-    check_exact(args, table, rows, workdir)
+    check_exact(args, table, rows, workdir, 5)
     outside = [row for row in rows if row[2] < 0.0 or row[2] > 50.0]
     inside = [row for row in rows if 0.0 <= row[2] <= 50.0]
     if len(outside) < 300 or len(inside) < 300:
         fail(f"Z did not sweep through and beyond the table ({len(inside)} inside, {len(outside)} outside)")
-    if not all(row[4] for row in outside) or any(row[4] for row in inside):
+    if not all(row[6] for row in outside) or any(row[6] for row in inside):
         fail("z-fault does not say exactly when Z is outside the table")
-    if not all(abs(row[5]) < 0.5 for row in rows):
+    if not all(abs(row[7]) < 0.5 for row in rows):
         fail("the command left the stroke with Z outside the table")
     print(f"z_outside: Z {min(r[2] for r in rows):.2f} .. {max(r[2] for r in rows):.2f} mm, "
           f"{len(outside)} samples outside, all faulted and held")

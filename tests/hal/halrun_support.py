@@ -10,6 +10,11 @@ import os
 import shutil
 import subprocess
 import tempfile
+import time
+
+# Another LinuxCNC instance (another test run, a machine) makes halrun refuse to start: wait for
+# it, this long at most.
+BUSY_WAIT_S = 300
 
 
 # Waits until FILE holds COUNT lines (halsampler writes them as they come); bounded by the
@@ -29,8 +34,33 @@ def halrun_env(workdir):
     return env
 
 
+def realtime_running():
+    """Whether an rtapi_app (some HAL instance) is running on this machine."""
+    for pid in os.listdir("/proc"):
+        if pid.isdigit():
+            try:
+                with open(f"/proc/{pid}/comm") as f:
+                    if f.read().strip() == "rtapi_app":
+                        return True
+            except OSError:
+                pass
+    return False
+
+
 def run_hal(hal_text, workdir, timeout_s=120):
-    """Runs `hal_text` with halrun -f; returns (exit status, output text)."""
+    """Runs `hal_text` with halrun -f, after any other HAL instance has ended (halrun refuses
+    to start beside one); returns (exit status, output text)."""
+    deadline = time.monotonic() + BUSY_WAIT_S
+    while True:
+        while realtime_running() and time.monotonic() < deadline:
+            time.sleep(1.0)
+        status, output = run_hal_once(hal_text, workdir, timeout_s)
+        if "Realtime already running" not in output or time.monotonic() >= deadline:
+            return status, output
+        time.sleep(1.0)
+
+
+def run_hal_once(hal_text, workdir, timeout_s):
     path = os.path.join(workdir, "test.hal")
     with open(path, "w") as f:
         f.write(hal_text)
