@@ -8,9 +8,11 @@ namespace nckit {
 
 namespace {
 
-//! Weight of the newest tick in the spindle speed estimate: an encoder that gives a count on
-//! most ticks and none on a few (its rate just below the tick rate) is followed within ~4 ticks.
-constexpr double speed_filter = 0.25;
+//! Weight of the newest period in the spindle speed estimate (a 2 ms time constant at 15 kHz).
+//! An encoder whose count rate sits just below the thread's gives no count in a rare period; the
+//! estimate then moves by 1/32 of a count, so the preview the feedforward reads stays within a
+//! few hundredths of a count of where the spindle goes.
+constexpr double speed_filter = 1.0 / 32.0;
 
 //! The learning's inverse is re-tuned to one count's time when the speed has moved this much.
 constexpr double retune_speed_fraction = 0.02;

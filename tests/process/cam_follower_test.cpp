@@ -82,7 +82,8 @@ TEST(CamFollower, IndexAtAWrongCountIsIgnoredAndLatched) {
     CamFollowerOutput out;
     for (std::int32_t c = 0; c < 3 * counts; ++c) {
         in.counts = c;
-        in.index = c % counts == 0 || c == counts + 100 || c == 2 * counts + 1;  // one wrong, one within tolerance
+        // One index 100 counts off, and the third turn's one count late (within tolerance).
+        in.index = (c % counts == 0 && c != 2 * counts) || c == counts + 100 || c == 2 * counts + 1;
         follower.step(in, settings, out);
         EXPECT_EQ(out.index_fault, c >= counts + 100) << c;
         // The near one (count 1) re-synchronises: the turn starts one count late from there.
@@ -104,7 +105,7 @@ TEST(CamFollower, ZOutsideTheTableHoldsTheEdgeAndFaults) {
         in.counts += 7;
         follower.step(in, settings, out);
         const double held = std::isnan(z) ? 50.0 : std::clamp(z, 0.0, 50.0);  // NaN holds the last Z
-        EXPECT_EQ(out.cam_mm, p.table(360.0 * out.count_in_turn / counts, held)) << z;
+        EXPECT_EQ(out.cam_mm, p.table(360.0 * static_cast<double>(out.count_in_turn) / counts, held)) << z;
         EXPECT_EQ(out.z_fault, z < 0.0 || z > 50.0 || std::isnan(z)) << z;
         EXPECT_TRUE(std::isfinite(out.command_mm));
     }
