@@ -12,8 +12,8 @@ for module in "$@"; do
   source_path=$(readlink -f "$module")
   target="$dir/$(basename "$module")"
   if [[ -e "$target" ]] && [[ "$(readlink -f "$target")" == "$source_path" ]]; then continue; fi
+  if [[ -f "$target" ]] && cmp -s "$source_path" "$target"; then continue; fi
   if [[ -w "$dir" ]]; then
-    if [[ -f "$target" && ! -L "$target" ]] && cmp -s "$source_path" "$target"; then continue; fi
     install -m 644 "$source_path" "$target.new"
     mv -f "$target.new" "$target"
   elif sudo -n true 2>/dev/null; then
