@@ -12,6 +12,8 @@ Cases:
               not re-synchronised to it (outputs stay exact), reset clears the fault
   z_outside   Z sweeps below and beyond the table: the edge value is held, z-fault says so
   bad_file    a broken table refuses to load with FILE:LINE:COL: error
+  eccentric   the X-diameter table of `nckit eccentric --cam-table` (no Z): exact at every count,
+              the command is the cam itself (no stroke reference), Z ignored
 """
 import argparse
 import json
@@ -201,6 +203,24 @@ def case_bad_file(args, workdir):
     print("bad_file: refused with", expected)
 
 
+def case_eccentric(args, workdir):
+    table = os.path.join(workdir, "eccentric_cam.csv")
+    subprocess.run([args.nckit, "eccentric", os.path.join(args.source, "examples/eccentric/eccentric_cam.toml"),
+                    "--machine", os.path.join(args.source, "examples/machines/lathe.toml"), "--cam-table", table],
+                   check=True, capture_output=True)
+    os.chmod(table, 0o644)
+    sampled = BASE + [("b", "nckit-cam.0.fault"), ("f", "sig:fts-cmd")]
+    # Z sweeps far outside 0 .. 0: a table without Z ignores it.
+    rows = run_or_fail(spindle_graph(table, z_offset_mm=-50.0, z_mm_rev=20.0, sampled=sampled, samples=1500), workdir)
+    check_exact(args, table, rows, workdir, 5)
+    check_count_in_turn(rows, 5, 4)
+    if any(row[6] for row in rows):
+        fail("a fault was raised following a table without Z")
+    if not all(row[7] == row[3] for row in rows):
+        fail("the command of a table without Z is not the cam value itself")
+    print(f"eccentric: {len(rows)} samples, X diameter {min(r[3] for r in rows):.4f} .. {max(r[3] for r in rows):.4f} mm")
+
+
 def piston_feedforward_pv_um(args, job):
     out = subprocess.run([args.nckit, "piston", job, "--json"], check=True, capture_output=True, text=True)
     return json.loads(out.stdout)["profile_error_um"]["feedforward"]["pv"]
@@ -240,7 +260,7 @@ def case_feedforward(args, workdir):
 
 
 CASES = {"exact": case_exact, "backwards": case_backwards, "index": case_index, "z_outside": case_z_outside,
-         "bad_file": case_bad_file, "feedforward": case_feedforward}
+         "bad_file": case_bad_file, "feedforward": case_feedforward, "eccentric": case_eccentric}
 
 
 def main():
