@@ -113,10 +113,15 @@ def case_exact(args, workdir):
 def case_backwards(args, workdir):
     table = write_table(args, workdir)
     sampled = BASE + [("b", "nckit-cam.0.fault"), ("f", "sig:fts-cmd")]
-    # Backwards from the start (negative counts), then forwards.
-    after = "loadusr -w sleep 0.2\nsetp sim-encoder.0.speed 41.6666\nloadusr -w sleep 0.2"
+    # Backwards from the start (negative counts), then forwards after 0.2 s of HAL time (a
+    # timedelay in the thread, so the switch comes at the same period whatever the load).
+    reverse = "\n".join([
+        "loadrt timedelay count=1", "loadrt mux2 count=1", "addf timedelay.0 servo", "addf mux2.0 servo",
+        "setp timedelay.0.in 1", "setp timedelay.0.on-delay 0.2", "net turn-forward timedelay.0.out => mux2.0.sel",
+        "setp mux2.0.in0 -41.6666", "setp mux2.0.in1 41.6666", "net spindle-speed mux2.0.out => sim-encoder.0.speed",
+        "setp nckit-cam.0.feedforward-enable 1"])
     rows = run_or_fail(spindle_graph(table, rev_s=-41.6666, z_offset_mm=30.0, sampled=sampled, samples=9000,
-                                     after_start=after, cam_setup="setp nckit-cam.0.feedforward-enable 1"), workdir)
+                                     cam_setup=reverse), workdir)
     steps = [int(b[1]) - int(a[1]) for a, b in zip(rows, rows[1:])]
     if not (max(steps) == 1 and min(steps) == -1):
         fail(f"the encoder did not run both ways (count steps {min(steps)} .. {max(steps)})")
@@ -147,9 +152,11 @@ def case_index(args, workdir):
         "net spindle-index or2.0.out => nckit-cam.0.spindle-index",
     ]
     sampled = BASE + [("b", "nckit-cam.0.index-fault")]
-    after = "loadusr -w sleep 0.35\nsetp nckit-cam.0.reset 1\nloadusr -w sleep 0.05\nsetp nckit-cam.0.reset 0\nloadusr -w sleep 0.1"
+    # reset rises after 0.35 s of HAL time (a timedelay in the thread) and stays.
+    reset = "\n".join(["loadrt timedelay count=1", "addf timedelay.0 servo", "setp timedelay.0.in 1",
+                       "setp timedelay.0.on-delay 0.35", "net cam-reset timedelay.0.out => nckit-cam.0.reset"])
     rows = run_or_fail(spindle_graph(table, z_offset_mm=10.0, sampled=sampled, samples=8000, index_net=index_net,
-                                     after_start=after), workdir)
+                                     cam_setup=reset), workdir)
     check_exact(args, table, rows, workdir, 5)
     check_count_in_turn(rows, 5, 4)
     first_fault = next((i for i, row in enumerate(rows) if row[6]), None)

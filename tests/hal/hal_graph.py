@@ -9,10 +9,11 @@ SERVO_PERIOD_NS = 66666  # 15.0002 kHz: one update per spindle degree at 2500 rp
 
 def spindle_graph(table, counts=360, rev_s=2500 / 60, z_offset_mm=0.0, z_mm_rev=0.0, z_min_mm=-1e9,
                   z_max_mm=1e9, sampled=(), samples=3000, depth=40000, cam_setup="", index_net=None,
-                  after_start="", period_ns=SERVO_PERIOD_NS, sample_file="samples.txt"):
-    """The .hal text. `sampled` lists (type letter, pin) recorded per period; `index_net` (HAL
-    lines) replaces the index wiring; `after_start` runs while halsampler records (loadusr -w
-    sleep and setp lines)."""
+                  period_ns=SERVO_PERIOD_NS, sample_file="samples.txt"):
+    """The .hal text. `sampled` lists (type letter, pin or "sig:SIGNAL") recorded per period;
+    `index_net` (HAL lines) replaces the index wiring; `cam_setup` (HAL lines) comes last before
+    start. Anything that must happen at a given time is done in the thread (timedelay), so a
+    loaded machine does not move it."""
     if counts % 4:
         raise ValueError("sim_encoder makes 4 counts per pulse: counts must be a multiple of 4")
     cfg = "".join(kind for kind, _ in sampled)
@@ -56,14 +57,6 @@ def spindle_graph(table, counts=360, rev_s=2500 / 60, z_offset_mm=0.0, z_mm_rev=
         lines.append(f"net sample-{i} {pin} => sampler.0.pin.{i}" if not pin.startswith("sig:")
                      else f"net {pin[4:]} => sampler.0.pin.{i}")
     lines.append("start")
-    if after_start.strip():
-        # halsampler records in the background while the lines change the graph; then wait for
-        # its last line.
-        lines.append(f"loadusr halsampler -t -n {samples} {sample_file}")
-        lines += after_start.strip().splitlines()
-        # (halcmd reads $ and [ as variables: the wait is a script beside the .hal file.)
-        lines.append(f"loadusr -w sh wait_samples.sh {sample_file} {samples}")
-    else:
-        lines.append(f"loadusr -w halsampler -t -n {samples} {sample_file}")
+    lines.append(f"loadusr -w halsampler -t -n {samples} {sample_file}")
     lines.append("stop")
     return "\n".join(lines) + "\n"

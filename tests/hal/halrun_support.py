@@ -17,12 +17,6 @@ import time
 BUSY_WAIT_S = 300
 
 
-# Waits until FILE holds COUNT lines (halsampler writes them as they come); bounded by the
-# caller's timeout.
-WAIT_SAMPLES = """until [ -f "$1" ] && [ "$(wc -l < "$1")" -ge "$2" ]; do sleep 0.05; done
-"""
-
-
 def halrun_env(workdir):
     env = dict(os.environ)
     if os.geteuid() == 0:
@@ -64,8 +58,6 @@ def run_hal_once(hal_text, workdir, timeout_s):
     path = os.path.join(workdir, "test.hal")
     with open(path, "w") as f:
         f.write(hal_text)
-    with open(os.path.join(workdir, "wait_samples.sh"), "w") as f:
-        f.write(WAIT_SAMPLES)
     # Files the sampler writes must be writable by the fallback user when run as root.
     os.chmod(workdir, 0o1777)
     command = "halrun -f " + path
