@@ -15,10 +15,8 @@ packages=(
   time
   # LinuxCNC's rs274 interpreter is the reference the program tests compare against.
   linuxcnc-uspace
-  # hal.h/rtapi.h, halcompile and Makefile.modinc: the nckit_cam HAL component (hal/).
+  # hal.h/rtapi.h and Makefile.modinc: the nckit_cam and nckit_servo HAL components (hal/).
   linuxcnc-uspace-dev
-  # linuxcnc-uspace-dev's headers include boost (rtapi and interp headers).
-  libboost-dev
 )
 
 missing=()
