@@ -12,6 +12,8 @@ Cases:
               not re-synchronised to it (outputs stay exact), reset clears the fault
   z_outside   Z sweeps below and beyond the table: the edge value is held, z-fault says so
   bad_file    a broken table refuses to load with FILE:LINE:COL: error
+  learning    the feedforward run with learning across revolutions on: after 20 turns in the air
+              the error over the cut is near nckit's learning figure (a few hundredths of a um)
   eccentric   the X-diameter table of `nckit eccentric --cam-table` (no Z): exact at every count,
               the command is the cam itself (no stroke reference), Z ignored
 """
@@ -228,19 +230,20 @@ def case_eccentric(args, workdir):
     print(f"eccentric: {len(rows)} samples, X diameter {min(r[3] for r in rows):.4f} .. {max(r[3] for r in rows):.4f} mm")
 
 
-def piston_feedforward_pv_um(args, job):
+def piston_feedforward_pv_um(args, job, run):
     out = subprocess.run([args.nckit, "piston", job, "--json"], check=True, capture_output=True, text=True)
-    return json.loads(out.stdout)["profile_error_um"]["feedforward"]["pv"]
+    return json.loads(out.stdout)["profile_error_um"][run]["pv"]
 
 
-def case_feedforward(args, workdir):
+def case_feedforward(args, workdir, learning=False):
     job = os.path.join(args.source, "examples/linuxcnc/piston_lathe/piston.toml")
     table = write_table(args, workdir)
-    expected_um = piston_feedforward_pv_um(args, job)
+    expected_um = piston_feedforward_pv_um(args, job, "learning" if learning else "feedforward")
     sampled = [("s", "sig:spindle-counts"), ("f", "sig:z-pos"), ("f", "nckit-cam.0.error"),
                ("b", "nckit-cam.0.fault")]
     setup = "\n".join([
         "setp nckit-cam.0.feedforward-enable 1",
+        f"setp nckit-cam.0.learning-enable {int(learning)}",
         # The controller's model: the job's servo off by its model_error (10 %) in all three.
         "setp nckit-cam.0.model-gain 1.1", "setp nckit-cam.0.model-natural-frequency-hz 148.5",
         "setp nckit-cam.0.model-damping 0.33", "setp nckit-cam.0.dac-bits 16", "setp nckit-cam.0.dac-stroke-mm 1.0",
@@ -257,17 +260,24 @@ def case_feedforward(args, workdir):
     pv_um = max(errors_um) - min(errors_um)
     last_turn = errors_um[-COUNTS:]
     turn_pv_um = max(last_turn) - min(last_turn)
-    print(json.dumps({"hal_pv_um": pv_um, "hal_last_turn_pv_um": turn_pv_um, "nckit_feedforward_pv_um": expected_um,
-                      "cut_samples": len(cut)}))
+    print(json.dumps({"hal_pv_um": pv_um, "hal_last_turn_pv_um": turn_pv_um, "nckit_pv_um": expected_um,
+                      "learning": learning, "cut_samples": len(cut)}))
     if any(row[4] for row in rows):
         fail("a fault was raised in the feedforward run")
+    if learning:
+        # nckit's learning figure is a few hundredths of a um, near the DAC step (15 nm) and the
+        # sampler's 1 nm print: the HAL loop must reach the same scale over the cut.
+        if not pv_um <= max(3 * expected_um, 0.1):
+            fail(f"the learning run's error over the cut, {pv_um:.4f} um, is not near nckit's {expected_um:.4f} um")
+        return
     if abs(turn_pv_um - expected_um) > 0.1 * expected_um:
         fail(f"the profile error over a turn in HAL, {turn_pv_um:.4f} um, is not within 10 % of nckit's "
              f"feedforward figure {expected_um:.4f} um")
 
 
 CASES = {"exact": case_exact, "backwards": case_backwards, "index": case_index, "z_outside": case_z_outside,
-         "bad_file": case_bad_file, "feedforward": case_feedforward, "eccentric": case_eccentric}
+         "bad_file": case_bad_file, "feedforward": case_feedforward, "eccentric": case_eccentric,
+         "learning": lambda args, workdir: case_feedforward(args, workdir, learning=True)}
 
 
 def main():
