@@ -6,7 +6,8 @@ Cost: the example's spindle (sim_encoder, encoder, 2500 rpm, 360 counts) and Z f
 drive nckit-cam.0 in a 66.666 us thread; its `call-ns` pin (the function's own duration by
 CPU clocks scaled to ns, the two clock reads included) is sampled every period for --calls periods, once
 with the cam alone and once with feedforward and learning on; prints the median, the 99.9th
-percentile and the worst. Then runs examples/linuxcnc/piston_lathe/run.sh. Needs the modules
+percentile and the worst. Then runs examples/linuxcnc/piston_lathe/run.sh, with feedforward and
+with learning (LEARNING=1). Needs the modules
 installed (cmake --build build/release --target hal-install).
 """
 import argparse
@@ -59,7 +60,9 @@ def main():
     cost(args.nckit, args.calls, "setp nckit-cam.0.feedforward-enable 1\nsetp nckit-cam.0.learning-enable 1\n"
          "setp nckit-cam.0.dac-bits 16", "cam + feedforward + learning + DAC")
     if not args.skip_example:
-        subprocess.run([os.path.join(source, "examples/linuxcnc/piston_lathe/run.sh"), args.nckit], check=True)
+        run = os.path.join(source, "examples/linuxcnc/piston_lathe/run.sh")
+        subprocess.run([run, args.nckit], check=True)
+        subprocess.run([run, args.nckit], check=True, env=dict(os.environ, LEARNING="1"))
 
 
 if __name__ == "__main__":

@@ -1,11 +1,12 @@
 """The piston's profile error from piston_lathe.hal's samples beside nckit's simulated figure.
 
-  profile_error.py SAMPLES.txt NCKIT.json
+  profile_error.py SAMPLES.txt NCKIT.json [LEARNING]
 
 SAMPLES: halsampler -t lines `tag counts z wanted command position error`. The cut is every
 sample from the first at which Z has left the crown; the error there is the axis position minus
 where the cam wants it (nckit_cam's error pin): its peak to valley and RMS in um, as
-`nckit piston` reports them over the turned surface. Prints one JSON object.
+`nckit piston` reports them over the turned surface, beside its feedforward run (its learning
+run when LEARNING is 1). Prints one JSON object.
 """
 import json
 import math
@@ -14,6 +15,7 @@ import sys
 
 def main():
     samples, nckit_json = sys.argv[1], sys.argv[2]
+    run = "learning" if len(sys.argv) > 3 and sys.argv[3] == "1" else "feedforward"
     errors = []
     first_z = None
     with open(samples) as f:
@@ -30,12 +32,12 @@ def main():
     if len(errors) < 1000:
         sys.exit(f"{samples}: only {len(errors)} samples of the cut")
     with open(nckit_json) as f:
-        simulated = json.load(f)["profile_error_um"]["feedforward"]
+        simulated = json.load(f)["profile_error_um"][run]
     pv = max(errors) - min(errors)
     rms = math.sqrt(sum(e * e for e in errors) / len(errors))
-    print(json.dumps({"hal_feedforward_pv_um": round(pv, 4), "hal_feedforward_rms_um": round(rms, 4),
-                      "nckit_feedforward_pv_um": round(simulated["pv"], 4),
-                      "nckit_feedforward_rms_um": round(simulated["rms"], 4), "cut_samples": len(errors)}))
+    print(json.dumps({"run": run, "hal_pv_um": round(pv, 4), "hal_rms_um": round(rms, 4),
+                      "nckit_pv_um": round(simulated["pv"], 4), "nckit_rms_um": round(simulated["rms"], 4),
+                      "cut_samples": len(errors)}))
 
 
 if __name__ == "__main__":
