@@ -1,6 +1,8 @@
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <sstream>
 #include <string>
 
@@ -57,13 +59,13 @@ TEST(CamTableFile, ReadsBackWhatPistonWrites) {
 
 TEST(CamTableFile, ReadsTheEccentricTableAsAFunctionOfTheAngle) {
     std::string text = "theta_deg,x_diameter_mm\n";
-    for (int d = 0; d < 360; ++d) text += std::to_string(d) + "," + std::to_string(40.0 + 2.0 * std::cos(d * M_PI / 180)) + "\n";
+    for (int d = 0; d < 360; ++d) text += std::to_string(d) + "," + std::to_string(40.0 + 2.0 * std::cos(d * std::numbers::pi / 180)) + "\n";
     const Result<CamTableFile> file = read_cam_table_csv(temp_file("eccentric.csv", text));
     ASSERT_TRUE(file.ok());
     EXPECT_EQ(file->kind(), CamFileKind::diameter_by_theta);
     const CamTable table = build_cam_table(*file);
     EXPECT_EQ(table.z_from_mm(), table.z_to_mm());
-    EXPECT_NEAR(table(45.5, 123.0), 40.0 + 2.0 * std::cos(45.5 * M_PI / 180), 2e-6);
+    EXPECT_NEAR(table(45.5, 123.0), 40.0 + 2.0 * std::cos(45.5 * std::numbers::pi / 180), 2e-6);
 }
 
 struct BadFile {
