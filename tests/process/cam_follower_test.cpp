@@ -74,6 +74,29 @@ TEST(CamFollower, CamAtEveryCountBothWaysAndNoAllocation) {
     EXPECT_EQ(allocations.load(), before) << "a tick allocated";
 }
 
+TEST(CamFollower, RevolutionInputReadsTheCamAtTheFractionOfTheTurn) {
+    const Piston p = example();
+    CamFollower follower(p.table, &p.reference, counts, 1.0 / 15000);
+    CamFollowerSettings settings;
+    settings.feedforward = true;
+    CamFollowerInput in;
+    in.use_counts = false;
+    in.z_mm = 12.5;
+    CamFollowerOutput out;
+    for (int tick = 0; tick < 2000; ++tick) {
+        in.revolutions = -1.3 + 0.0027 * tick;  // through zero, both signs
+        follower.step(in, settings, out);
+        const double turns = in.revolutions - std::floor(in.revolutions);
+        ASSERT_NEAR(out.angle_deg, 360.0 * turns, 1e-9);
+        ASSERT_NEAR(out.cam_mm, p.table(360.0 * turns, 12.5), 1e-12);
+        ASSERT_FALSE(out.input_fault || out.z_fault);
+    }
+    in.revolutions = std::nan("");
+    follower.step(in, settings, out);
+    EXPECT_TRUE(out.input_fault);
+    EXPECT_TRUE(std::isfinite(out.command_mm));
+}
+
 TEST(CamFollower, IndexAtAWrongCountIsIgnoredAndLatched) {
     const Piston p = example();
     CamFollower follower(p.table, &p.reference, counts, 1.0 / 15000);
