@@ -16,6 +16,10 @@ struct AxisPoint {
 };
 
 AxisPoint arc_axis_at(const PathSegment& g, std::size_t i, double s) {
+    if (g.shape == SegmentShape::quintic) {
+        const PathPoint p = point_at(g, s);
+        return {p.position[i], p.d1[i]};
+    }
     const double k = g.angle_rate;
     const double theta = k * s;
     const double c = std::cos(theta);
@@ -28,7 +32,36 @@ constexpr double two_pi = 2 * std::numbers::pi;
 
 }  // namespace
 
+//! A quintic transition's turning points on axis i: the roots of the quartic dq/ds, bracketed
+//! by sign changes over 64 samples and bisected. The transitions are short and gently curved
+//! (their direction turns by at most the corner's angle), so two roots never share a sample step.
+static std::vector<double> quintic_turning_points(const PathSegment& g, std::size_t i) {
+    std::vector<double> out;
+    constexpr int samples = 64;
+    auto slope = [&](double s) { return point_at(g, s).d1[i]; };
+    double s_a = 0;
+    double f_a = slope(0.0);
+    for (int k = 1; k <= samples; ++k) {
+        const double s_b = g.length * k / samples;
+        const double f_b = slope(s_b);
+        if ((f_a < 0 && f_b > 0) || (f_a > 0 && f_b < 0)) {
+            double lo = s_a;
+            double hi = s_b;
+            for (int it = 0; it < 100 && hi - lo > 1e-15 * g.length; ++it) {
+                const double mid = 0.5 * (lo + hi);
+                if ((slope(mid) > 0) == (f_a > 0)) lo = mid; else hi = mid;
+            }
+            const double s = 0.5 * (lo + hi);
+            if (s > 0 && s < g.length) out.push_back(s);
+        }
+        s_a = s_b;
+        f_a = f_b;
+    }
+    return out;
+}
+
 std::vector<double> arc_turning_points(const PathSegment& g, std::size_t i) {
+    if (g.shape == SegmentShape::quintic) return quintic_turning_points(g, i);
     std::vector<double> out;
     const double k = g.angle_rate;
     const double m = std::hypot(g.u[i], g.v[i]);

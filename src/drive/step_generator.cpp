@@ -163,7 +163,8 @@ void StepGenerator::add(const TrajectoryPiece& piece) {
             axis.started = true;
         }
         // An axis off the circle (a helix's axis, UVW, ABC) moves linearly along the piece.
-        const bool curved = g.radius_mm > 0 && i < 3 && (g.u[i] != 0 || g.v[i] != 0);
+        const bool curved = i < 3 && ((g.radius_mm > 0 && (g.u[i] != 0 || g.v[i] != 0)) ||
+                                      g.shape == SegmentShape::quintic);
         if (!curved && g.rate[i] == 0) {
             // The axis does not move along this piece; a rounding step between pieces goes at
             // the piece start.

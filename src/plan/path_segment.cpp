@@ -1,5 +1,7 @@
 #include "nckit/plan/path_segment.hpp"
 
+#include "quintic_bounds.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -44,6 +46,12 @@ double measured_length(const AxisVector& d) {
 AxisVector position_at(const PathSegment& g, double s) {
     AxisVector p;
     for (std::size_t i = 0; i < axis_count; ++i) p[i] = g.origin[i] + g.rate[i] * s;
+    if (g.shape == SegmentShape::quintic) {
+        for (std::size_t i = 0; i < 3; ++i) {
+            p[i] += s * s * (g.poly[0][i] + s * (g.poly[1][i] + s * (g.poly[2][i] + s * g.poly[3][i])));
+        }
+        return p;
+    }
     if (g.radius_mm > 0) {
         const double theta = g.angle_rate * s;
         const double c = g.radius_mm * std::cos(theta);
@@ -58,6 +66,19 @@ PathPoint point_at(const PathSegment& g, double s) {
     for (std::size_t i = 0; i < axis_count; ++i) {
         out.position[i] = g.origin[i] + g.rate[i] * s;
         out.d1[i] = g.rate[i];
+    }
+    if (g.shape == SegmentShape::quintic) {
+        for (std::size_t i = 0; i < 3; ++i) {
+            const double c2 = g.poly[0][i];
+            const double c3 = g.poly[1][i];
+            const double c4 = g.poly[2][i];
+            const double c5 = g.poly[3][i];
+            out.position[i] += s * s * (c2 + s * (c3 + s * (c4 + s * c5)));
+            out.d1[i] += s * (2 * c2 + s * (3 * c3 + s * (4 * c4 + s * 5 * c5)));
+            out.d2[i] = 2 * c2 + s * (6 * c3 + s * (12 * c4 + s * 20 * c5));
+            out.d3[i] = 6 * c3 + s * (24 * c4 + s * 60 * c5);
+        }
+        return out;
     }
     if (g.radius_mm > 0) {
         const double k = g.angle_rate;
@@ -151,6 +172,7 @@ double max_abs(double c, double a, double b, double sweep) {
 
 DerivativeBounds derivative_bounds(const PathSegment& g) {
     DerivativeBounds b;
+    if (g.shape == SegmentShape::quintic) return quintic_bounds(g);
     for (std::size_t i = 0; i < axis_count; ++i) b.d1[i] = std::abs(g.rate[i]);
     if (!(g.radius_mm > 0)) return b;  // a line: |p'| = 1 on the measured axes by construction
     // Over the arc's own sweep, not the whole circle: with θ = k·s in [0, k·length],
@@ -192,6 +214,25 @@ DerivativeBounds derivative_bounds(const PathSegment& g) {
                                           : sinusoid_range(2.0 * r1 * rv, -2.0 * r1 * ru, sweep);
     b.speed_factor = std::sqrt(std::max(0.0, rate2 + r1 * r1 + cross.hi));
     return b;
+}
+
+PathSegment trim_start(const PathSegment& g, double trim) {
+    PathSegment out = g;
+    out.length = g.length - trim;
+    if (g.radius_mm > 0) {
+        // The centre's linear part moves on; the start direction turns by the angle swept.
+        const double theta = g.angle_rate * trim;
+        const double c = std::cos(theta);
+        const double sn = std::sin(theta);
+        for (std::size_t i = 0; i < axis_count; ++i) out.origin[i] = g.origin[i] + g.rate[i] * trim;
+        for (std::size_t i = 0; i < 3; ++i) {
+            out.u[i] = c * g.u[i] + sn * g.v[i];
+            out.v[i] = -sn * g.u[i] + c * g.v[i];
+        }
+    } else {
+        out.origin = position_at(g, trim);
+    }
+    return out;
 }
 
 PathSegment make_line(const AxisVector& from, const AxisVector& to) {

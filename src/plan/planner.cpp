@@ -10,6 +10,7 @@
 
 #include "junction.hpp"
 #include "lookahead.hpp"
+#include "transition.hpp"
 #include "nckit/plan/segment_limits.hpp"
 
 namespace nckit {
@@ -33,10 +34,16 @@ struct Planner::Impl {
         double full_length = 0;  //!< programmed length, for the half-line rule
         ProfileLimits limits;
         double feed_mm_s = 0;    //!< +inf for rapids
-        bool blendable = false;  //!< a G1 line
+        bool blendable = false;  //!< a G1 line or a G2/G3 arc: its ends may be rounded
         PathControl control;
         SourceLocation where;
         std::int64_t sequence_number = -1;
+        //! The transition into this motion, held back until the next join is known: when that
+        //! join's transition eats the whole of this motion, both meet with a common curvature.
+        std::optional<plan_detail::Transition> entry;
+        double entry_feed_mm_s = 0;
+        SourceLocation entry_where;
+        std::int64_t entry_number = -1;
     };
 
     MachineConfig machine;
@@ -76,6 +83,12 @@ struct Planner::Impl {
     void release_pending(double junction_max) {
         if (!pending) return;
         Pending& p = *pending;
+        if (p.entry) {
+            const ProfileLimits limits = segment_limits(p.entry->curve, machine, p.entry_feed_mm_s, kind,
+                                                         kind == ProfileKind::trapezoid ? trapezoid_blend_normal_share : 0.5);
+            add_segment(std::move(p.entry->curve), limits, limits.max_velocity, p.entry_where, p.entry_number, true, {});
+            p.entry.reset();
+        }
         if (p.path.length > min_trimmed_length) {
             add_segment(std::move(p.path), p.limits, junction_max, p.where, p.sequence_number, false,
                         std::move(pending_events));
@@ -89,26 +102,20 @@ struct Planner::Impl {
     void connect(Pending next) {
         if (pending) {
             Pending& p = *pending;
+            // Trapezoids may step the acceleration, so only the direction must be continuous;
+            // a jerk limit needs the curvature continuous too (docs/planner.md).
+            const bool jerk_limited = kind == ProfileKind::scurve;
             if (p.control.exact_stop) {
                 release_pending(0.0);
-            } else if (plan_detail::tangent(p.path, next.path)) {
+            } else if (jerk_limited ? plan_detail::smooth_join(p.path, next.path,
+                                                               plan_detail::smooth_direction_tolerance, true)
+                                    : plan_detail::tangent(p.path, next.path)) {
                 release_pending(p.limits.max_velocity);
             } else if (p.blendable && next.blendable) {
                 const double tolerance = p.control.tolerance_mm > 0 ? p.control.tolerance_mm
                                                                     : options.default_blend_tolerance_mm;
-                auto blend = plan_detail::blend_lines(p.path, p.full_length, next.path, tolerance);
-                if (blend) {
-                    p.path.length -= blend->trim_mm;
-                    const ProfileLimits limits = segment_limits(
-                        blend->arc, machine, std::min(p.feed_mm_s, next.feed_mm_s), kind,
-                        kind == ProfileKind::trapezoid ? trapezoid_blend_normal_share : 0.5);
-                    const SourceLocation where = p.where;
-                    const std::int64_t number = p.sequence_number;
-                    release_pending(p.limits.max_velocity);
-                    add_segment(blend->arc, limits, limits.max_velocity, where, number, true, {});
-                    next.path.origin = position_at(next.path, blend->trim_mm);
-                    next.path.length -= blend->trim_mm;
-                } else {
+                const bool rounded = (!jerk_limited && blend_corner(p, next, tolerance)) || transition(p, next, tolerance);
+                if (!rounded) {
                     release_pending(0.0);
                 }
             } else {
@@ -116,6 +123,66 @@ struct Planner::Impl {
             }
         }
         pending = std::move(next);
+    }
+
+    //! Trapezoid plans round a corner between two lines with a circular arc.
+    bool blend_corner(Pending& p, Pending& next, double tolerance) {
+        auto blend = plan_detail::blend_lines(p.path, p.full_length, next.path, tolerance);
+        if (!blend) return false;
+        p.path.length -= blend->trim_mm;
+        insert_between(p, next, blend->arc, blend->trim_mm, trapezoid_blend_normal_share);
+        return true;
+    }
+
+    //! Any other corner, and every join with a jump in curvature under a jerk limit: a quintic
+    //! transition within the tolerance. Each side gives at most half its programmed length.
+    bool transition(Pending& p, Pending& next, double tolerance) {
+        auto t = plan_detail::make_transition(p.path, 0.5 * p.full_length, next.path, 0.5 * next.path.length,
+                                              tolerance);
+        if (!t) return false;
+        if (p.entry && !(p.path.length - t->trim_before > 0)) {
+            // p is eaten by its two transitions: they meet at its middle, in its direction, with
+            // the curvature of the turn between their outer ends (transition.hpp); failing the
+            // tolerance, as built (no curvature there).
+            std::array<double, 3> k{};
+            std::array<double, 3> own{};
+            const double span = p.entry->curve.length + t->curve.length;
+            for (std::size_t i = 0; i < 3; ++i) {
+                k[i] = (t->end.d1[i] - p.entry->start.d1[i]) / span;
+                own[i] = t->start.d1[i];
+            }
+            auto xyz = [](const AxisVector& v) { return std::array<double, 3>{v[0], v[1], v[2]}; };
+            plan_detail::Transition entry = *p.entry;
+            plan_detail::Transition exit = *t;
+            if (plan_detail::set_end_states(entry, xyz(entry.start.d1), xyz(entry.start.d2), own, k, tolerance) &&
+                plan_detail::set_end_states(exit, own, k, xyz(exit.end.d1), xyz(exit.end.d2), tolerance)) {
+                *p.entry = std::move(entry);
+                *t = std::move(exit);
+            }
+        }
+        p.path.length -= t->trim_before;
+        const SourceLocation where = p.where;
+        const std::int64_t number = p.sequence_number;
+        const double feed = std::min(p.feed_mm_s, next.feed_mm_s);
+        release_pending(p.limits.max_velocity);
+        next.path = trim_start(next.path, t->trim_after);
+        next.entry = std::move(*t);
+        next.entry_feed_mm_s = feed;
+        next.entry_where = where;
+        next.entry_number = number;
+        return true;
+    }
+
+    //! `curve` goes between the pending motion (already trimmed) and `next`, whose start loses
+    //! trim_after.
+    void insert_between(Pending& p, Pending& next, const PathSegment& curve, double trim_after, double normal_share) {
+        const ProfileLimits limits =
+            segment_limits(curve, machine, std::min(p.feed_mm_s, next.feed_mm_s), kind, normal_share);
+        const SourceLocation where = p.where;
+        const std::int64_t number = p.sequence_number;
+        release_pending(p.limits.max_velocity);
+        add_segment(curve, limits, limits.max_velocity, where, number, true, {});
+        next.path = trim_start(next.path, trim_after);
     }
 
     bool check_axes(const PathSegment& path, const SourceLocation& where) {
@@ -249,7 +316,7 @@ struct Planner::Impl {
             motion(make_line(line->from, line->to), feed, !line->rapid, line->path, move);
         } else if (const auto* arc = std::get_if<Arc>(&move.what)) {
             locate(arc->from);
-            motion(make_arc(*arc), feed_mm_s(arc->feed) * override_factor, false, arc->path, move);
+            motion(make_arc(*arc), feed_mm_s(arc->feed) * override_factor, true, arc->path, move);
         } else if (const auto* sync = std::get_if<SyncMove>(&move.what)) {
             locate(sync->from);
             sync_motion(*sync, move, after_sync);

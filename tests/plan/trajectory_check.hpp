@@ -11,6 +11,8 @@
 
 #include "nckit/core/machine.hpp"
 #include "nckit/plan/trajectory.hpp"
+#include "nckit/interp/move.hpp"
+#include "nckit/plan/path_segment.hpp"
 
 namespace nckit::plan_test {
 
@@ -26,6 +28,44 @@ inline MachineConfig test_machine(ProfileKind kind = ProfileKind::scurve) {
     m.axes.push_back(a);
     m.exact_stop_mcodes = {7, 8};
     return m;
+}
+
+//! The programmed path of a line or arc move (a zero-length line for anything else).
+inline PathSegment programmed_segment(const Move& move) {
+    if (const auto* l = std::get_if<Line>(&move.what)) return make_line(l->from, l->to);
+    if (const auto* a = std::get_if<Arc>(&move.what)) return make_arc(*a);
+    return {};
+}
+
+//! mm: the largest distance, over 65 points of a blend or transition piece, from the programmed
+//! path of the two moves it joins (each taken as 4,096 chords; lines exactly).
+inline double deviation_from(const TrajectoryPiece& piece, const Move& before, const Move& after) {
+    double worst = 0;
+    const PathSegment paths[2] = {programmed_segment(before), programmed_segment(after)};
+    for (int k = 0; k <= 64; ++k) {
+        const AxisVector p = position_at(piece.segment, piece.segment.length * k / 64);
+        double best = std::numeric_limits<double>::infinity();
+        for (const PathSegment& g : paths) {
+            const int chords = g.radius_mm > 0 ? 4096 : 1;
+            AxisVector a = position_at(g, 0.0);
+            for (int c = 1; c <= chords; ++c) {
+                const AxisVector b = position_at(g, g.length * c / chords);
+                double dd = 0;
+                double t = 0;
+                for (std::size_t i = 0; i < 3; ++i) {
+                    dd += (b[i] - a[i]) * (b[i] - a[i]);
+                    t += (p[i] - a[i]) * (b[i] - a[i]);
+                }
+                t = dd > 0 ? std::clamp(t / dd, 0.0, 1.0) : 0.0;
+                double d2 = 0;
+                for (std::size_t i = 0; i < 3; ++i) d2 += (p[i] - a[i] - t * (b[i] - a[i])) * (p[i] - a[i] - t * (b[i] - a[i]));
+                best = std::min(best, std::sqrt(d2));
+                a = b;
+            }
+        }
+        worst = std::max(worst, best);
+    }
+    return worst;
 }
 
 struct CheckStats {

@@ -1,6 +1,7 @@
 #pragma once
-// The geometry of one piece of path, parameterised by its length s: straight lines, and circular
-// arcs or helices in any plane of XYZ. G2/G3 arcs and the planner's corner blends share it.
+// The geometry of one piece of path, parameterised by its length s: straight lines, circular
+// arcs or helices in any plane of XYZ, and quintic transitions. G2/G3 arcs and the planner's
+// corner blends share it.
 #include <array>
 
 #include "nckit/core/axes.hpp"
@@ -8,7 +9,10 @@
 
 namespace nckit {
 
-enum class SegmentShape { line, arc };
+//! quintic: a curvature-continuous transition the planner puts where two pieces of path meet
+//! with a corner or a jump in curvature (docs/planner.md); s is then its polynomial parameter,
+//! close to but not exactly its arc length.
+enum class SegmentShape { line, arc, quintic };
 
 //! position(s) = origin + rate·s + radius·(cos θ·u + sin θ·v) with θ = angle_rate·s, for
 //! s in [0, length]; the circular term acts on X, Y, Z only (u, v are XYZ vectors), the linear
@@ -25,6 +29,8 @@ struct PathSegment {
     std::array<double, 3> v{};  //!< XYZ unit vector, ⟂ u, the direction of travel at the start
     double radius_mm = 0;       //!< mm, 0 for lines
     double angle_rate = 0;      //!< rad per unit s (sweep / length), 0 for lines
+    //! quintic only: XYZ coefficients of s², s³, s⁴, s⁵ added to origin + rate·s.
+    std::array<std::array<double, 3>, 4> poly{};
 
     //! rad, the angle the arc sweeps (0 for lines).
     [[nodiscard]] double sweep_rad() const { return angle_rate * length; }
@@ -62,6 +68,15 @@ struct DerivativeBounds {
 //! A G2/G3 arc or helix, full turns included. It starts exactly at arc.from; its end is arc.to
 //! up to rounding (a radius mismatch between start and end becomes a small linear in-plane part).
 [[nodiscard]] PathSegment make_arc(const Arc& arc);
+
+//! The quintic of length `length` (> 0) with the given position, first and second derivative
+//! w.r.t. s at both ends (quintic Hermite interpolation on XYZ). Every other axis moves at
+//! `other_rate` per unit s from start.position.
+[[nodiscard]] PathSegment make_quintic(const PathPoint& start, const PathPoint& end, double length,
+                                       const AxisVector& other_rate);
+
+//! The segment without its first `trim` of s (0 <= trim <= length; lines and arcs).
+[[nodiscard]] PathSegment trim_start(const PathSegment& segment, double trim);
 
 //! A circular arc of XYZ through `start` with the given centre, starting along unit `tangent`
 //! and sweeping sweep_rad, with the other axes moving at `other_rate` per mm (used for blends).

@@ -1,0 +1,112 @@
+// Quintic transitions: construction by Hermite interpolation, and bounds of their derivatives.
+#include <algorithm>
+#include <cmath>
+
+#include "nckit/plan/path_segment.hpp"
+#include "quintic_bounds.hpp"
+
+namespace nckit {
+
+PathSegment make_quintic(const PathPoint& start, const PathPoint& end, double length, const AxisVector& other_rate) {
+    PathSegment g;
+    g.shape = SegmentShape::quintic;
+    g.length = length;
+    g.origin = start.position;
+    for (std::size_t i = 3; i < axis_count; ++i) g.rate[i] = other_rate[i];
+    // In u = s / L: p(u) = Σ a_k u^k with p, p', p'' given at u = 0 and 1 (derivatives in u are
+    // L and L² times those in s). The coefficients in s are a_k / L^k.
+    const double l = length;
+    for (std::size_t i = 0; i < 3; ++i) {
+        const double delta = end.position[i] - start.position[i];
+        const double v0 = start.d1[i] * l;
+        const double v1 = end.d1[i] * l;
+        const double k0 = start.d2[i] * l * l;
+        const double k1 = end.d2[i] * l * l;
+        const double a3 = 10 * delta - 6 * v0 - 4 * v1 - (3 * k0 - k1) / 2;
+        const double a4 = -15 * delta + 8 * v0 + 7 * v1 + (3 * k0 - 2 * k1) / 2;
+        const double a5 = 6 * delta - 3 * v0 - 3 * v1 - (k0 - k1) / 2;
+        g.rate[i] = start.d1[i];
+        g.poly[0][i] = start.d2[i] / 2;
+        g.poly[1][i] = a3 / (l * l * l);
+        g.poly[2][i] = a4 / (l * l * l * l);
+        g.poly[3][i] = a5 / (l * l * l * l * l);
+    }
+    return g;
+}
+
+namespace {
+
+//! max |c0 + c1 s + c2 s²| over [0, l].
+double max_abs_quadratic(double c0, double c1, double c2, double l) {
+    auto f = [&](double s) { return std::abs(c0 + s * (c1 + s * c2)); };
+    double m = std::max(f(0), f(l));
+    if (c2 != 0) {
+        const double vertex = -c1 / (2 * c2);
+        if (vertex > 0 && vertex < l) m = std::max(m, f(vertex));
+    }
+    return m;
+}
+
+//! max |c0 + c1 s + c2 s² + c3 s³| over [0, l]: ends and the roots of the derivative.
+double max_abs_cubic(double c0, double c1, double c2, double c3, double l) {
+    auto f = [&](double s) { return std::abs(c0 + s * (c1 + s * (c2 + s * c3))); };
+    double m = std::max(f(0), f(l));
+    // 3 c3 s² + 2 c2 s + c1 = 0
+    const double qa = 3 * c3;
+    const double qb = 2 * c2;
+    const double qc = c1;
+    if (qa == 0) {
+        if (qb != 0) {
+            const double s = -qc / qb;
+            if (s > 0 && s < l) m = std::max(m, f(s));
+        }
+        return m;
+    }
+    const double disc = qb * qb - 4 * qa * qc;
+    if (disc < 0) return m;
+    const double root = std::sqrt(disc);
+    for (double s : {(-qb - root) / (2 * qa), (-qb + root) / (2 * qa)}) {
+        if (s > 0 && s < l) m = std::max(m, f(s));
+    }
+    return m;
+}
+
+constexpr int bound_samples = 24;
+constexpr double bound_pad = 1e-12;
+
+}  // namespace
+
+DerivativeBounds quintic_bounds(const PathSegment& g) {
+    DerivativeBounds b;
+    const double l = g.length;
+    for (std::size_t i = 3; i < axis_count; ++i) b.d1[i] = std::abs(g.rate[i]);
+    double d2_norm2 = 0;
+    for (std::size_t i = 0; i < 3; ++i) {
+        const double c1 = g.rate[i];
+        const double c2 = g.poly[0][i];
+        const double c3 = g.poly[1][i];
+        const double c4 = g.poly[2][i];
+        const double c5 = g.poly[3][i];
+        b.d3[i] = max_abs_quadratic(6 * c3, 24 * c4, 60 * c5, l) * (1 + bound_pad);
+        b.d2[i] = max_abs_cubic(2 * c2, 6 * c3, 12 * c4, 20 * c5, l) * (1 + bound_pad);
+        d2_norm2 += b.d2[i] * b.d2[i];
+        // q' sampled; between samples it moves by at most d2 · h/2 from the nearer one.
+        const double h = l / bound_samples;
+        double m = 0;
+        for (int k = 0; k <= bound_samples; ++k) {
+            const double s = h * k;
+            m = std::max(m, std::abs(c1 + s * (2 * c2 + s * (3 * c3 + s * (4 * c4 + s * 5 * c5)))));
+        }
+        b.d1[i] = (m + b.d2[i] * h / 2) * (1 + bound_pad);
+    }
+    const double h = l / bound_samples;
+    double speed = 0;
+    for (int k = 0; k <= bound_samples; ++k) {
+        const PathPoint p = point_at(g, h * k);
+        speed = std::max(speed, std::sqrt(p.d1[0] * p.d1[0] + p.d1[1] * p.d1[1] + p.d1[2] * p.d1[2]));
+    }
+    b.speed_factor = (speed + std::sqrt(d2_norm2) * h / 2) * (1 + bound_pad);
+    return b;
+}
+
+}  // namespace nckit

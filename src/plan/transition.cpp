@@ -1,0 +1,153 @@
+#include "transition.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace nckit::plan_detail {
+
+namespace {
+
+// The deviation is measured at this many points of the curve; the target leaves a margin for
+// what lies between them (the curve is smooth and its points move by < 1/64 of it per step).
+constexpr int deviation_samples = 32;
+constexpr double deviation_target = 0.95;
+// The curve must keep moving forward: |dp/ds| at least this everywhere sampled (no cusp or loop).
+constexpr double min_parametric_speed = 0.3;
+constexpr int max_attempts = 48;
+constexpr double min_trim_mm = 1e-7;
+
+double distance3(const AxisVector& a, const AxisVector& b) {
+    return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+//! Distance from p to the XYZ chord a–b.
+double to_chord(const AxisVector& p, const AxisVector& a, const AxisVector& b) {
+    double dd = 0;
+    double t = 0;
+    for (std::size_t i = 0; i < 3; ++i) {
+        dd += (b[i] - a[i]) * (b[i] - a[i]);
+        t += (p[i] - a[i]) * (b[i] - a[i]);
+    }
+    t = dd > 0 ? std::clamp(t / dd, 0.0, 1.0) : 0.0;
+    AxisVector q = a;
+    for (std::size_t i = 0; i < 3; ++i) q[i] = a[i] + t * (b[i] - a[i]);
+    return distance3(p, q);
+}
+
+//! Points along s in [s0, s1] of a segment, as chords; a line is its own chord, an arc gets
+//! enough chords that their sagitta stays far below any tolerance, and that sagitta is added.
+struct Piece {
+    std::array<AxisVector, 33> points{};
+    int count = 0;
+    double sagitta = 0;
+};
+
+Piece piece_of(const PathSegment& g, double s0, double s1) {
+    Piece out;
+    const int chords = g.radius_mm > 0 ? 32 : 1;
+    for (int k = 0; k <= chords; ++k) out.points[k] = position_at(g, s0 + (s1 - s0) * k / chords);
+    out.count = chords + 1;
+    if (g.radius_mm > 0) {
+        const double half_angle = 0.5 * std::abs(g.angle_rate) * (s1 - s0) / chords;
+        out.sagitta = g.radius_mm * (1 - std::cos(half_angle));
+    }
+    return out;
+}
+
+double to_piece(const AxisVector& p, const Piece& piece) {
+    double best = distance3(p, piece.points[0]);
+    for (int k = 0; k + 1 < piece.count; ++k) best = std::min(best, to_chord(p, piece.points[k], piece.points[k + 1]));
+    return best + piece.sagitta;
+}
+
+}  // namespace
+
+bool smooth_join(const PathSegment& before, const PathSegment& after, double direction_tolerance, bool curvature_too) {
+    const PathPoint e = point_at(before, before.length);
+    const PathPoint s = point_at(after, 0.0);
+    for (std::size_t i = 0; i < axis_count; ++i) {
+        if (std::abs(e.d1[i] - s.d1[i]) > direction_tolerance) return false;
+        if (curvature_too && std::abs(e.d2[i] - s.d2[i]) > smooth_curvature_tolerance) return false;
+    }
+    return true;
+}
+
+namespace {
+
+//! Builds the curve between the states and measures it against the replaced path; false when it
+//! leaves the tolerance (target fraction) or nearly stops moving along its parameter.
+bool build(Transition& t, const PathPoint& a, const PathPoint& b, double tolerance_mm) {
+    const double chord = distance3(a.position, b.position);
+    const double length = 0.5 * (chord + t.trim_before + t.trim_after);
+    PathSegment curve = make_quintic(a, b, length, AxisVector{});
+    const Piece tail = piece_of(t.replaced_before, 0.0, t.replaced_before.length);
+    const Piece head = piece_of(t.replaced_after, 0.0, t.replaced_after.length);
+    double deviation = 0;
+    double slowest = 1e300;
+    for (int k = 0; k <= deviation_samples; ++k) {
+        const PathPoint q = point_at(curve, length * k / deviation_samples);
+        deviation = std::max(deviation, std::min(to_piece(q.position, tail), to_piece(q.position, head)));
+        slowest = std::min(slowest, std::sqrt(q.d1[0] * q.d1[0] + q.d1[1] * q.d1[1] + q.d1[2] * q.d1[2]));
+        if (deviation > tolerance_mm) break;
+    }
+    t.deviation_mm = deviation;
+    if (!(deviation <= deviation_target * tolerance_mm && slowest >= min_parametric_speed)) return false;
+    t.curve = curve;
+    t.start = a;
+    t.end = b;
+    return true;
+}
+
+}  // namespace
+
+std::optional<Transition> make_transition(const PathSegment& before, double before_room, const PathSegment& after,
+                                          double after_room, double tolerance_mm) {
+    if (!(tolerance_mm > 0) || before.shape == SegmentShape::quintic || after.shape == SegmentShape::quintic) {
+        return std::nullopt;
+    }
+    // The quintic covers XYZ; any other axis would arrive at the wrong place (its length differs
+    // from the trims), so they must stand.
+    for (std::size_t i = 3; i < axis_count; ++i) {
+        if (before.rate[i] != 0 || after.rate[i] != 0) return std::nullopt;
+    }
+    before_room = std::min(before_room, before.length);
+    after_room = std::min(after_room, after.length);
+    // A sliver of `before` left over would be a segment of its own: take it into the curve.
+    if (before.length - before_room < min_leftover_mm) before_room = before.length;
+    double t = std::min(before_room, after_room);
+    for (int attempt = 0; attempt < max_attempts; ++attempt) {
+        double trim_a = std::min(t, before_room);
+        if (before.length - trim_a < min_leftover_mm) trim_a = before.length;
+        const double trim_b = std::min(t, after_room);
+        if (!(trim_a > min_trim_mm && trim_b > min_trim_mm)) return std::nullopt;
+        Transition out;
+        out.trim_before = trim_a;
+        out.trim_after = trim_b;
+        out.replaced_before = trim_start(before, before.length - trim_a);
+        out.replaced_after = after;
+        out.replaced_after.length = trim_b;
+        if (build(out, point_at(before, before.length - trim_a), point_at(after, trim_b), tolerance_mm)) return out;
+        const double target = deviation_target * tolerance_mm;
+        const double shrink = out.deviation_mm > target ? 0.9 * target / out.deviation_mm : 0.5;
+        t = std::max(trim_a, trim_b) * std::clamp(shrink, 0.05, 0.8);
+    }
+    return std::nullopt;
+}
+
+bool set_end_states(Transition& transition, const std::array<double, 3>& start_d1, const std::array<double, 3>& start_d2,
+                    const std::array<double, 3>& end_d1, const std::array<double, 3>& end_d2, double tolerance_mm) {
+    PathPoint a = transition.start;
+    PathPoint b = transition.end;
+    for (std::size_t i = 0; i < 3; ++i) {
+        a.d1[i] = start_d1[i];
+        a.d2[i] = start_d2[i];
+        b.d1[i] = end_d1[i];
+        b.d2[i] = end_d2[i];
+    }
+    Transition trial = transition;
+    if (!build(trial, a, b, tolerance_mm)) return false;
+    transition = trial;
+    return true;
+}
+
+}  // namespace nckit::plan_detail

@@ -1,0 +1,57 @@
+#pragma once
+// Curvature-continuous transitions where two pieces of path meet with a corner or a jump in
+// curvature: a quintic that leaves `before` and joins `after` with the same position, direction
+// and curvature vector, so the axes' velocity and acceleration stay continuous through it at any
+// speed, and that stays within the path tolerance of the programmed path.
+#include <optional>
+
+#include "nckit/plan/path_segment.hpp"
+
+namespace nckit::plan_detail {
+
+//! The join passes at speed without a transition: directions (dq/ds, every axis) equal within
+//! direction_tolerance, and, when `curvature_too`, curvature vectors (d²q/ds²) within
+//! curvature_tolerance (1/mm).
+[[nodiscard]] bool smooth_join(const PathSegment& before, const PathSegment& after, double direction_tolerance,
+                               bool curvature_too);
+
+//! A direction step of 1e-9 at 100 mm/s changes the velocity by 1e-7 mm/s: differenced over a
+//! 0.1 ms trace period that is a jerk of 10 mm/s³. A curvature step of 1e-7/mm at 100 mm/s
+//! steps the acceleration by 1e-3 mm/s², the same jerk. Both are far below any jerk limit.
+inline constexpr double smooth_direction_tolerance = 1e-9;
+inline constexpr double smooth_curvature_tolerance = 1e-7;
+
+struct Transition {
+    PathSegment curve;        //!< quintic from before's new end to after's new start
+    double trim_before = 0;   //!< s cut from before's end
+    double trim_after = 0;    //!< s cut from after's start
+    double deviation_mm = 0;  //!< mm, largest distance of the curve from the programmed path found
+    PathPoint start;          //!< the state the curve leaves from (on before)
+    PathPoint end;            //!< and arrives at (on after)
+    PathSegment replaced_before;  //!< the programmed path it replaces: before's tail,
+    PathSegment replaced_after;   //!< and after's head
+};
+
+//! The same transition with the direction and curvature vectors (dq/ds and d²q/ds² on XYZ) at
+//! its ends replaced, when it still keeps within tolerance_mm. A chain of transitions that eats
+//! whole short lines (a CAM polyline) meets at the lines' middles; there the two transitions may
+//! agree on any state. With the direction of the chord through the neighbouring joins and the
+//! curvature of the turn between them (instead of the line's own direction and 0), the chain
+//! follows the curve the polyline samples, and its speed is set by that curve's radius rather
+//! than by a curvature pulse at every vertex and the rounding noise of the written decimals.
+[[nodiscard]] bool set_end_states(Transition& transition, const std::array<double, 3>& start_d1,
+                                  const std::array<double, 3>& start_d2, const std::array<double, 3>& end_d1,
+                                  const std::array<double, 3>& end_d2, double tolerance_mm);
+
+//! The transition that trims at most before_room from before's end and after_room from
+//! after's start (a leftover of before shorter than min_leftover_mm is taken whole), as long
+//! as its deviation stays within tolerance_mm; none when the axes beyond XYZ move, when the
+//! measured axes are not XYZ, or when no trim long enough fits the tolerance.
+[[nodiscard]] std::optional<Transition> make_transition(const PathSegment& before, double before_room,
+                                                        const PathSegment& after, double after_room,
+                                                        double tolerance_mm);
+
+//! Pieces of path left between transitions shorter than this (mm) join the transition.
+inline constexpr double min_leftover_mm = 1e-3;
+
+}  // namespace nckit::plan_detail
