@@ -209,7 +209,12 @@ struct Planner::Impl {
         }
         if (!check_axes(path, move.where)) return;
         Pending next;
-        next.limits = segment_limits(path, machine, feed_mm_s, kind);
+        // A trapezoid arc runs at constant speed where it is slowest: like a blend, it gives most
+        // of the acceleration to the turning (the rest still changes speed along it).
+        const double share = kind == ProfileKind::trapezoid && path.shape == SegmentShape::arc
+                                 ? trapezoid_blend_normal_share
+                                 : 0.5;
+        next.limits = segment_limits(path, machine, feed_mm_s, kind, share);
         next.full_length = path.length;
         next.path = std::move(path);
         next.feed_mm_s = feed_mm_s;

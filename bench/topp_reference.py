@@ -1,0 +1,196 @@
+#!/usr/bin/env python3
+"""Time-optimal reference for the planner: grid TOPP with exact per-axis constraints.
+
+For a program of G1/G2/G3 moves in G17 (absolute, mm, the programs in bench/planner_programs),
+the path q(s) is taken exactly as programmed (lines and arcs, s = arc length). Along it the
+axes must keep, at every s, for every axis i:
+    |q_i'(s)| * sdot <= vmax,   |q_i''(s) * sdot^2 + q_i'(s) * sddot| <= amax,   |q'| * sdot <= F.
+With u = sdot^2 these are linear in (u, sddot): at each grid point the largest feasible u (the
+maximum velocity curve) follows in closed form from the pairwise intersections of the
+per-axis bounds on sddot, and the fastest profile under it is the forward pass (accelerate as
+hard as the point allows, u_{k+1} = u_k + 2 ds sddot_max) followed by the backward pass
+(brake as hard as allowed), the classic reachability / numerical-integration TOPP. Its time
+sum 2 ds / (sqrt(u_k) + sqrt(u_{k+1})) converges to the time-optimal cycle time as the grid is
+refined; the grid is doubled until the time changes by less than 1e-4 relative.
+
+Joins whose directions differ by more than --kink-rad (default 1e-3 rad: written decimals) are
+corners: the reference stops there (exact path; a blend within G64 P would be faster, so for
+programs with corners this is not the optimum and is reported as "exact-path").
+
+Usage: bench/topp_reference.py PROGRAM [--vmax 100] [--amax 500] [--kink-rad 1e-3]
+Prints JSON: {"program", "time_s", "grid_points", "refinements": [[points, time_s], ...],
+"corners"}.
+"""
+import argparse
+import json
+import math
+import sys
+
+
+def parse(text):
+    """[(kind, start, end, centre, clockwise, feed_mm_s)]"""
+    pos, mode, feed = [0.0, 0.0, 0.0], 1, 0.0
+    out = []
+    for raw in text.splitlines():
+        line = raw.split("(")[0].strip().upper()
+        if not line or line.startswith("%"):
+            continue
+        words, gs, i = {}, [], 0
+        while i < len(line):
+            j = i + 1
+            while j < len(line) and (line[j].isdigit() or line[j] in ".-+"):
+                j += 1
+            if line[i].isalpha():
+                value = float(line[i + 1:j]) if j > i + 1 else 0.0
+                (gs.append(value) if line[i] == "G" else words.__setitem__(line[i], value))
+            i = max(j, i + 1)
+        for g in gs:
+            if g in (0, 1, 2, 3):
+                mode = int(g)
+        if "F" in words:
+            feed = words["F"] / 60.0
+        if not any(k in words for k in "XYZ"):
+            continue
+        end = [words.get("X", pos[0]), words.get("Y", pos[1]), words.get("Z", pos[2])]
+        if end == pos and mode in (0, 1):
+            continue  # a full circle (G2/G3 back to its start) is kept
+        if mode in (0, 1):
+            out.append(("line", pos, end, None, False, feed if mode == 1 else math.inf))
+        else:
+            out.append(("arc", pos, end, [pos[0] + words.get("I", 0.0), pos[1] + words.get("J", 0.0)], mode == 2, feed))
+        pos = end
+    return out
+
+
+class Piece:
+    """Exact q(s), q'(s), q''(s) of one move."""
+
+    def __init__(self, move):
+        kind, a, b, centre, clockwise, feed = move
+        self.feed = feed
+        self.kind = kind
+        if kind == "line":
+            d = [b[k] - a[k] for k in range(3)]
+            self.length = math.sqrt(sum(x * x for x in d))
+            self.dir = [x / self.length for x in d]
+            return
+        self.c = centre
+        self.r = math.hypot(a[0] - centre[0], a[1] - centre[1])
+        self.a0 = math.atan2(a[1] - centre[1], a[0] - centre[0])
+        a1 = math.atan2(b[1] - centre[1], b[0] - centre[0])
+        sweep = (self.a0 - a1) if clockwise else (a1 - self.a0)
+        while sweep <= 1e-9:
+            sweep += 2 * math.pi
+        self.sign = -1.0 if clockwise else 1.0
+        planar = self.r * sweep
+        self.dz = b[2] - a[2]
+        self.length = math.hypot(planar, self.dz)
+        self.k = sweep / self.length  # rad per mm of s
+
+    def derivatives(self, s):
+        if self.kind == "line":
+            return self.dir, [0.0, 0.0, 0.0]
+        th = self.a0 + self.sign * self.k * s
+        rk = self.r * self.k
+        d1 = [-self.sign * rk * math.sin(th), self.sign * rk * math.cos(th), self.dz / self.length]
+        d2 = [-rk * self.k * math.cos(th), -rk * self.k * math.sin(th), 0.0]
+        return d1, d2
+
+
+def bounds(d1, d2, amax):
+    """sddot bounds as (alpha, beta) lines in u: lower_i = al + bl u, upper_i = au + bu u."""
+    lows, ups, caps = [], [], []
+    for i in range(3):
+        if abs(d1[i]) > 1e-12:
+            p = ((-amax) / d1[i], -d2[i] / d1[i])
+            q = (amax / d1[i], -d2[i] / d1[i])
+            lo, hi = (p, q) if d1[i] > 0 else (q, p)
+            lows.append(lo)
+            ups.append(hi)
+        elif abs(d2[i]) > 1e-15:
+            caps.append(amax / abs(d2[i]))
+    return lows, ups, caps
+
+
+def mvc(d1, d2, feed, vmax, amax):
+    u = (feed / math.sqrt(sum(x * x for x in d1))) ** 2 if math.isfinite(feed) else math.inf
+    for i in range(3):
+        if abs(d1[i]) > 1e-12:
+            u = min(u, (vmax / abs(d1[i])) ** 2)
+    lows, ups, caps = bounds(d1, d2, amax)
+    for c in caps:
+        u = min(u, c)
+    for al, bl in lows:
+        for au, bu in ups:
+            if bl - bu > 1e-15:
+                u = min(u, (au - al) / (bl - bu))
+    return u
+
+
+def sddot_range(d1, d2, u, amax):
+    lows, ups, _ = bounds(d1, d2, amax)
+    return max(a + b * u for a, b in lows), min(a + b * u for a, b in ups)
+
+
+def topp_time(pieces, stops, points, vmax, amax):
+    total = sum(p.length for p in pieces)
+    ds_target = total / points
+    grid = []  # (d1, d2, feed, forced_stop)
+    for n, p in enumerate(pieces):
+        m = max(2, math.ceil(p.length / ds_target))
+        for k in range(m):
+            s = p.length * k / m
+            d1, d2 = p.derivatives(s)
+            grid.append((p.length / m, d1, d2, p.feed, k == 0 and n in stops))
+    d1, d2 = pieces[-1].derivatives(pieces[-1].length)
+    grid.append((0.0, d1, d2, pieces[-1].feed, True))
+    caps = [0.0 if g[4] else mvc(g[1], g[2], g[3], vmax, amax) for g in grid]
+    caps[0] = 0.0
+    u = caps[:]
+    u[0] = 0.0
+    for k in range(len(grid) - 1):
+        _, hi = sddot_range(grid[k][1], grid[k][2], u[k], amax)
+        u[k + 1] = min(u[k + 1], max(0.0, u[k] + 2 * grid[k][0] * max(hi, 0.0)))
+    for k in range(len(grid) - 2, -1, -1):
+        lo, _ = sddot_range(grid[k + 1][1], grid[k + 1][2], u[k + 1], amax)
+        u[k] = min(u[k], max(0.0, u[k + 1] - 2 * grid[k][0] * min(lo, 0.0)))
+    t = 0.0
+    for k in range(len(grid) - 1):
+        denominator = math.sqrt(u[k]) + math.sqrt(u[k + 1])
+        if grid[k][0] > 0:
+            t += 2 * grid[k][0] / denominator if denominator > 0 else math.inf
+    return t, len(grid)
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("program")
+    ap.add_argument("--vmax", type=float, default=100.0)
+    ap.add_argument("--amax", type=float, default=500.0)
+    ap.add_argument("--kink-rad", type=float, default=1e-3)
+    ap.add_argument("--start-points", type=int, default=4000)
+    ap.add_argument("--max-points", type=int, default=2_000_000)
+    args = ap.parse_args()
+    pieces = [Piece(m) for m in parse(open(args.program).read())]
+    stops = {0}
+    for n in range(1, len(pieces)):
+        a, _ = pieces[n - 1].derivatives(pieces[n - 1].length)
+        b, _ = pieces[n].derivatives(0.0)
+        dot = max(-1.0, min(1.0, sum(x * y for x, y in zip(a, b))))
+        if math.acos(dot) > args.kink_rad:
+            stops.add(n)
+    refinements = []
+    points, previous = args.start_points, None
+    while points <= args.max_points:
+        t, n = topp_time(pieces, stops, points, args.vmax, args.amax)
+        refinements.append([n, t])
+        if previous is not None and abs(t - previous) < 1e-4 * t:
+            break
+        previous, points = t, points * 2
+    print(json.dumps({"program": args.program, "time_s": refinements[-1][1], "grid_points": refinements[-1][0],
+                      "refinements": refinements, "corners": len(stops) - 1,
+                      "converged": len(refinements) > 1 and abs(refinements[-1][1] - refinements[-2][1]) < 1e-4 * refinements[-1][1]}))
+
+
+if __name__ == "__main__":
+    sys.exit(main())
