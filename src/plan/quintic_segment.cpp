@@ -102,8 +102,14 @@ DerivativeBounds quintic_bounds(const PathSegment& g) {
     const double h = l / bound_samples;
     double speed = 0;
     for (int k = 0; k <= bound_samples; ++k) {
-        const PathPoint p = point_at(g, h * k);
-        speed = std::max(speed, std::sqrt(p.d1[0] * p.d1[0] + p.d1[1] * p.d1[1] + p.d1[2] * p.d1[2]));
+        const double s = h * k;
+        double speed2 = 0;
+        for (std::size_t i = 0; i < 3; ++i) {
+            const double d1 = g.rate[i] + s * (2 * g.poly[0][i] + s * (3 * g.poly[1][i] + s * (4 * g.poly[2][i] +
+                                                                                                 s * 5 * g.poly[3][i])));
+            speed2 += d1 * d1;
+        }
+        speed = std::max(speed, std::sqrt(speed2));
     }
     b.speed_factor = (speed + std::sqrt(d2_norm2) * h / 2) * (1 + bound_pad);
     return b;

@@ -29,9 +29,12 @@ double to_chord(const AxisVector& p, const AxisVector& a, const AxisVector& b) {
         t += (p[i] - a[i]) * (b[i] - a[i]);
     }
     t = dd > 0 ? std::clamp(t / dd, 0.0, 1.0) : 0.0;
-    AxisVector q = a;
-    for (std::size_t i = 0; i < 3; ++i) q[i] = a[i] + t * (b[i] - a[i]);
-    return distance3(p, q);
+    double d2 = 0;
+    for (std::size_t i = 0; i < 3; ++i) {
+        const double e = p[i] - a[i] - t * (b[i] - a[i]);
+        d2 += e * e;
+    }
+    return std::sqrt(d2);
 }
 
 //! Points along s in [s0, s1] of a segment, as chords; a line is its own chord, an arc gets
@@ -55,7 +58,7 @@ Piece piece_of(const PathSegment& g, double s0, double s1) {
 }
 
 double to_piece(const AxisVector& p, const Piece& piece) {
-    double best = distance3(p, piece.points[0]);
+    double best = piece.count == 1 ? distance3(p, piece.points[0]) : 1e300;
     for (int k = 0; k + 1 < piece.count; ++k) best = std::min(best, to_chord(p, piece.points[k], piece.points[k + 1]));
     return best + piece.sagitta;
 }
@@ -85,9 +88,22 @@ bool build(Transition& t, const PathPoint& a, const PathPoint& b, double toleran
     double deviation = 0;
     double slowest = 1e300;
     for (int k = 0; k <= deviation_samples; ++k) {
-        const PathPoint q = point_at(curve, length * k / deviation_samples);
-        deviation = std::max(deviation, std::min(to_piece(q.position, tail), to_piece(q.position, head)));
-        slowest = std::min(slowest, std::sqrt(q.d1[0] * q.d1[0] + q.d1[1] * q.d1[1] + q.d1[2] * q.d1[2]));
+        // XYZ position and slope only (point_at would do every axis and two more derivatives).
+        const double s = length * k / deviation_samples;
+        AxisVector q;
+        double speed2 = 0;
+        for (std::size_t i = 0; i < 3; ++i) {
+            const double c1 = curve.rate[i];
+            const double c2 = curve.poly[0][i];
+            const double c3 = curve.poly[1][i];
+            const double c4 = curve.poly[2][i];
+            const double c5 = curve.poly[3][i];
+            q[i] = curve.origin[i] + s * (c1 + s * (c2 + s * (c3 + s * (c4 + s * c5))));
+            const double d1 = c1 + s * (2 * c2 + s * (3 * c3 + s * (4 * c4 + s * 5 * c5)));
+            speed2 += d1 * d1;
+        }
+        deviation = std::max(deviation, std::min(to_piece(q, tail), to_piece(q, head)));
+        slowest = std::min(slowest, std::sqrt(speed2));
         if (deviation > tolerance_mm) break;
     }
     t.deviation_mm = deviation;

@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Cycle times of the planner programs against the grid TOPP optimum (bench/topp_reference.py):
+# nckit trapezoid, nckit S-curve at j 50,000 and 5,000 mm/s³; 100 mm/s and 500 mm/s² per axis.
+# Prints a Markdown table. Usage: bench/planner_optimum.sh [NCKIT_BINARY]
+set -euo pipefail
+repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+nckit=${1:-$repo/build/release/src/nckit}
+programs=$repo/bench/planner_programs
+work=$(mktemp -d -t nckit-optimum-XXXXXX)
+trap 'rm -rf "$work"' EXIT
+for jerk in 50000 5000; do
+  {
+    printf '[machine]\nname = "optimum-bench"\nservo_period_s = 0.001\n\n'
+    for ax in X Y Z; do
+      printf '[[axis]]\nname = "%s"\nkind = "linear"\nmax_velocity = 100\nmax_acceleration = 500\n' "$ax"
+      printf 'max_jerk = %s\nmin = -1000.0\nmax = 1000.0\nsteps_per_unit = 1000.0\n\n' "$jerk"
+    done
+  } > "$work/j$jerk.toml"
+done
+cycle() { "$nckit" plan "$programs/$1" --machine "$work/j$2.toml" --profile "$3" --json |
+          python3 -c 'import json,sys; print("%.3f" % json.load(sys.stdin)["cycle_time_s"])'; }
+echo "| program | optimum (s) | nckit trapezoid (s) | ratio | S-curve j 50,000 (s) | S-curve j 5,000 (s) |"
+echo "|---|---:|---:|---:|---:|---:|"
+for prog in circle_g2 circle_2000 semicircles_100 square_100 slot slot_f6000 raster_3d circle_8arcs; do
+  trap_s=$(cycle "$prog.ngc" 50000 trapezoid)
+  s50=$(cycle "$prog.ngc" 50000 scurve)
+  s5=$(cycle "$prog.ngc" 5000 scurve)
+  opt=$(python3 "$repo/bench/topp_reference.py" "$programs/$prog.ngc" --max-points 1000000 |
+        python3 -c 'import json,sys; r=json.load(sys.stdin); print("%.3f%s" % (r["time_s"], " (exact path, %d stops)" % r["corners"] if r["corners"] else ""))')
+  ratio=$(python3 -c "print('%.3f' % ($trap_s / float('$opt'.split()[0])))")
+  echo "| $prog | $opt | $trap_s | $ratio | $s50 | $s5 |"
+done
