@@ -25,6 +25,12 @@ for prog in circle_g2 circle_2000 semicircles_100 square_100 slot slot_f6000 ras
   trap_s=$(cycle "$prog.ngc" 50000 trapezoid)
   s50=$(cycle "$prog.ngc" 50000 scurve)
   s5=$(cycle "$prog.ngc" 5000 scurve)
+  # Polylines: their optimum is the best curve within G64 P, which the grid reference (it follows
+  # the programmed path and stops at corners) does not compute.
+  if [[ $prog == circle_2000 || $prog == raster_3d ]]; then
+    echo "| $prog | not computed | $trap_s | | $s50 | $s5 |"
+    continue
+  fi
   opt=$(python3 "$repo/bench/topp_reference.py" "$programs/$prog.ngc" --max-points 1000000 |
         python3 -c 'import json,sys; r=json.load(sys.stdin); print("%.3f%s" % (r["time_s"], " (exact path, %d stops)" % r["corners"] if r["corners"] else ""))')
   ratio=$(python3 -c "print('%.3f' % ($trap_s / float('$opt'.split()[0])))")

@@ -146,17 +146,20 @@ def check(name, nckit, program, machine, profile, jerk, folder):
     path = programmed_path(program.read_text())
     deviation_excess = 0.0
     at = 0
+    # A transition between moves i and i+1 uses move i's tolerance, so a point near move i may be
+    # off it by the larger of its own and its predecessor's. Paths may cross themselves: the
+    # excess is the smallest over the moves near the point's place in the program.
+    allowed = [max(path[i][5], path[i - 1][5] if i > 0 else 0.0) for i in range(len(path))]
     for k in range(0, len(rows), 2):
         p = rows[k]
         lo, hi = max(0, at - 3), min(len(path), at + 12)
         best, best_i = math.inf, at
         for i in range(lo, hi):
-            d = distance(p, path[i])
-            if d < best:
-                best, best_i = d, i
+            excess = distance(p, path[i]) - allowed[i]
+            if excess < best:
+                best, best_i = excess, i
         at = best_i
-        allowed = max(path[i][5] for i in range(max(0, best_i - 1), min(len(path), best_i + 2))) if path else 0
-        deviation_excess = max(deviation_excess, best - allowed)
+        deviation_excess = max(deviation_excess, best)
     limits = [1.001, 1.005, 1.01]
     status = []
     for what, value, limit in zip("vaj", worst, limits):
