@@ -158,6 +158,11 @@ def check(name, nckit, program, machine, profile, jerk, folder):
             excess = distance(p, path[i]) - allowed[i]
             if excess < best:
                 best, best_i = excess, i
+        if best > 1e-3:  # lost the place (a crossing path took it): look at every move
+            for i in range(len(path)):
+                excess = distance(p, path[i]) - allowed[i]
+                if excess < best:
+                    best, best_i = excess, i
         at = best_i
         deviation_excess = max(deviation_excess, best)
     limits = [1.001, 1.005, 1.01]
