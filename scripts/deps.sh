@@ -15,6 +15,10 @@ packages=(
   time
   # LinuxCNC's rs274 interpreter is the reference the program tests compare against.
   linuxcnc-uspace
+  # LinuxCNC's interpreter interface (interp_base.hh, canon.hh) for the nckit interpreter plug-in.
+  linuxcnc-uspace-dev
+  # boost/noncopyable.hpp, which interp_base.hh includes.
+  libboost-dev
 )
 
 missing=()
