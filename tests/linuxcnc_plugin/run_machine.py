@@ -247,6 +247,14 @@ def display_main(argv):
         result["phase"] = "done"
     except Exception as ex:
         result["errors"].append(f"{type(ex).__name__}: {ex}")
+        try:  # where it stood, for the report
+            s.poll()
+            result["state"] = {k: getattr(s, k) for k in (
+                "task_state", "exec_state", "interp_state", "queue", "inpos", "motion_line",
+                "current_line", "read_line", "queue_full", "current_vel")}
+            result["state"]["spindle"] = s.spindle[0]
+        except Exception:
+            pass
         try:
             c.abort()
         except Exception:
@@ -420,6 +428,8 @@ def parent_main(args):
         motions, error = nckit_moves(args, nckit_opts, work)
         if not rows:
             fail("no samples")
+        if not motions:
+            fail("nckit moves printed no motion")
         worst, reached = check_path(rows, motions, axes)
         last = dict(zip(axes, rows[-1]))
         end = motions[-1]["end"] if motions else {a: 0.0 for a in axes}
