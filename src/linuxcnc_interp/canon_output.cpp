@@ -100,8 +100,7 @@ void CanonOutput::mark_line(const Move& move) {
 }
 
 void CanonOutput::straight(const Line& line, int source_line) {
-    // A Fanuc rapid ends decelerated with an in-position check: LinuxCNC would blend G0 corners.
-    set_path(line.rapid ? PathControl{true, 0} : line.path);
+    set_path(line.path);
     const AxisVector& p = line.to;
     auto v = [&](std::size_t i) { return program(i, p[i]); };
     if (line.rapid) {
