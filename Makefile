@@ -4,7 +4,7 @@ NCKIT      := $(BUILD)/src/nckit
 DEMO       := examples/01_mill_pocket.ngc
 JOBS       ?= 2
 
-.PHONY: all deps configure build run test test-unit test-asan bench clean hal hal-install
+.PHONY: all deps configure build run test test-unit test-asan bench clean hal hal-install install-linuxcnc-plugin
 
 all: build
 
@@ -45,6 +45,12 @@ test-asan: deps
 	@cmake --preset asan >/dev/null
 	@cmake --build --preset asan -j $(JOBS)
 	@ctest --preset asan
+
+# The LinuxCNC interpreter plug-in (built when linuxcnc-uspace-dev is installed) into LinuxCNC's
+# library folder, where an INI's `[TASK] INTERPRETER = libnckit_linuxcnc.so` finds it (as root).
+install-linuxcnc-plugin: build
+	@install -m 644 $(BUILD)/src/linuxcnc_interp/libnckit_linuxcnc.so /usr/lib/linuxcnc/
+	@echo "installed /usr/lib/linuxcnc/libnckit_linuxcnc.so"
 
 bench: build
 	@bash bench/run_all.sh

@@ -15,8 +15,11 @@ packages=(
   time
   # LinuxCNC's rs274 interpreter is the reference the program tests compare against.
   linuxcnc-uspace
-  # hal.h/rtapi.h and Makefile.modinc: the nckit_cam and nckit_servo HAL components (hal/).
+  # hal.h/rtapi.h and Makefile.modinc (the nckit_cam and nckit_servo HAL components, hal/);
+  # interp_base.hh and canon.hh (the nckit interpreter plug-in, src/linuxcnc_interp/).
   linuxcnc-uspace-dev
+  # boost/noncopyable.hpp, which interp_base.hh includes.
+  libboost-dev
 )
 
 missing=()

@@ -9,6 +9,7 @@
 #include "program_transform.hpp"
 #include "nckit/core/machine.hpp"
 #include "nckit/interp/interpreter.hpp"
+#include "nckit/interp/modal_view.hpp"
 
 namespace nckit::interp {
 
@@ -27,6 +28,8 @@ public:
     [[nodiscard]] std::optional<SystemVariables::WriteError> write_system(std::int64_t number, double value);
 
     [[nodiscard]] bool inch_units() const { return modal_.length_factor_mm != 1.0; }
+    //! Units, offsets and modes after the last block run (executor_modal_view.cpp).
+    [[nodiscard]] ModalView modal_view() const;
     //! Simulated time since the start, s: moves at programmed feed (rapids at the axis limits)
     //! and dwells. The macro timers #3001/#3002 run on it.
     [[nodiscard]] double elapsed_s() const { return elapsed_s_; }

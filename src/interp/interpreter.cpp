@@ -32,6 +32,8 @@ Interpreter::~Interpreter() = default;
 
 const MachineConfig& Interpreter::machine() const { return state_->machine; }
 
+ModalView Interpreter::modal_view() const { return state_->runner.modal_view(); }
+
 InterpResult Interpreter::next() {
     State& s = *state_;
     while (s.next_pending == s.pending.size()) {

@@ -47,6 +47,8 @@ public:
     //! Writes #500-#999 back when the program changed them and a file is configured.
     [[nodiscard]] std::optional<Diagnostic> save_retained() const;
 
+    [[nodiscard]] ModalView modal_view() const { return executor_.modal_view(); }
+
     [[nodiscard]] std::optional<MacroValue> read_system(std::int64_t number) const override;
     [[nodiscard]] std::optional<SystemVariables::WriteError> write_system(std::int64_t number, double value) override;
 

@@ -7,6 +7,7 @@
 #include "nckit/core/diagnostic.hpp"
 #include "nckit/core/machine.hpp"
 #include "nckit/gcode/program_source.hpp"
+#include "nckit/interp/modal_view.hpp"
 #include "nckit/interp/move.hpp"
 
 namespace nckit {
@@ -48,6 +49,10 @@ public:
     [[nodiscard]] InterpResult next();
 
     [[nodiscard]] const MachineConfig& machine() const;
+
+    //! Units, work offsets and modes in force for the moves next() returns now: those of the
+    //! block that made them (a block's moves come out together, after its modes are set).
+    [[nodiscard]] ModalView modal_view() const;
 
 private:
     struct State;

@@ -1,0 +1,27 @@
+#include "executor.hpp"
+
+namespace nckit::interp {
+
+ModalView Executor::modal_view() const {
+    ModalView view;
+    view.length_factor_mm = modal_.length_factor_mm;
+    view.work_system = modal_.work_system;
+    view.work_offset = offsets_.work[modal_.work_system];
+    view.g92_offset = offsets_.g92;
+    view.g52_offset = offsets_.g52;
+    view.plane = modal_.plane;
+    view.incremental = modal_.incremental;
+    view.feed_mode = modal_.feed_mode;
+    view.diameter_mode = modal_.diameter_mode;
+    view.motion_code = modal_.motion;
+    view.path = modal_.path;
+    view.feed = modal_.feed;
+    view.spindle_rpm = modal_.spindle.rpm;
+    view.spindle_direction = modal_.spindle.direction;
+    view.constant_surface_speed = modal_.spindle.constant_surface_speed;
+    view.surface_speed_m_min = modal_.spindle.surface_speed_m_min;
+    view.tool = modal_.tool;
+    return view;
+}
+
+}  // namespace nckit::interp

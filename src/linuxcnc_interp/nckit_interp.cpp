@@ -1,0 +1,297 @@
+#include "nckit_interp.hpp"
+
+#include <cstdlib>
+#include <cstring>
+#include <exception>
+
+#include <fmt/format.h>
+
+namespace nckit::lcnc {
+
+namespace {
+
+char* copy_out(const std::string& text, char* buf, size_t buflen) {
+    if (buf == nullptr || buflen == 0) return buf;
+    std::size_t n = std::min(text.size(), buflen - 1);
+    std::memcpy(buf, text.data(), n);
+    buf[n] = '\0';
+    return buf;
+}
+
+bool blank(const char* line) {
+    if (line == nullptr) return true;
+    for (const char* p = line; *p != '\0'; ++p) {
+        if (*p != ' ' && *p != '\t' && *p != '\r' && *p != '\n') return false;
+    }
+    return true;
+}
+
+//! Runs `body`; an exception (out of memory, a file system error) becomes an interpreter error
+//! instead of unwinding into LinuxCNC.
+template <typename Body>
+int guarded(std::string& error, Body&& body) {
+    try {
+        return body();
+    } catch (const std::exception& e) {
+        error = fmt::format("nckit interpreter: {}", e.what());
+    } catch (...) {
+        error = "nckit interpreter: unexpected failure";
+    }
+    return INTERP_ERROR;
+}
+
+}  // namespace
+
+int NckitInterp::fail(std::string message) {
+    error_ = std::move(message);
+    return INTERP_ERROR;
+}
+
+int NckitInterp::fail_with(const Diagnostic& d) {
+    line_ = static_cast<int>(d.location.line);
+    return fail(format_diagnostic(d));
+}
+
+// ---- set-up ----------------------------------------------------------------------------------
+
+int NckitInterp::ini_load(const char* inifile) {
+    ini_path_ = inifile != nullptr ? inifile : "";
+    return INTERP_OK;
+}
+
+int NckitInterp::init() {
+    return guarded(error_, [&] {
+        // The task names the INI through ini_load(); standalone rs274 -i puts it in INI_FILE_NAME.
+        if (ini_path_.empty()) {
+            if (const char* env = std::getenv("INI_FILE_NAME")) ini_path_ = env;
+        }
+        settings_ = PluginSettings{};
+        setup_error_.reset();
+        machine_.reset();
+        if (!ini_path_.empty()) {
+            if (auto error = read_plugin_settings(ini_path_, settings_)) {
+                setup_error_ = *error;
+                return fail(*error);
+            }
+        }
+        if (settings_.machine_file.empty()) {
+            machine_ = default_mill();
+        } else {
+            auto machine = load_machine_config(settings_.machine_file);
+            if (!machine) {
+                setup_error_ = format_diagnostic(machine.diagnostics().front());
+                return fail(*setup_error_);
+            }
+            machine_ = std::move(machine).value();
+        }
+        return static_cast<int>(INTERP_OK);
+    });
+}
+
+int NckitInterp::open(const char* filename) {
+    return guarded(error_, [&] {
+        close();
+        if (!machine_ && !setup_error_) init();
+        if (setup_error_) return fail(*setup_error_);
+        if (filename == nullptr || filename[0] == '\0') return fail("nckit interpreter: no program file given");
+        // Opened once here so that a missing file is reported at open, as LinuxCNC's own does.
+        auto source = ProgramSource::open(filename);
+        if (!source) return fail_with(source.diagnostics().front());
+        program_path_ = filename;
+        return static_cast<int>(INTERP_OK);
+    });
+}
+
+int NckitInterp::start_run() {
+    auto source = ProgramSource::open(program_path_);
+    if (!source) {
+        program_error_ = source.diagnostics().front();
+        return fail_with(*program_error_);
+    }
+    InterpreterOptions options;
+    options.block_delete = GET_BLOCK_DELETE();
+    options.library_dir = settings_.library_dir;
+    options.retained_file = settings_.retained_file;
+    options.max_blocks = settings_.max_blocks;
+    interpreter_.emplace(*machine_, std::move(source).value(), options);
+    canon_.emplace(interpreter_->machine(), settings_.g64_tolerance_mm, settings_.line_comments);
+    return INTERP_OK;
+}
+
+int NckitInterp::close() {
+    interpreter_.reset();
+    canon_.reset();
+    pending_.reset();
+    pending_end_ = false;
+    ended_ = false;
+    program_error_.reset();
+    program_path_.clear();
+    line_ = 0;
+    sequence_ = 0;
+    return INTERP_OK;
+}
+
+int NckitInterp::exit() { return close(); }
+
+int NckitInterp::reset() {
+    pending_.reset();
+    pending_end_ = false;
+    return INTERP_OK;
+}
+
+int NckitInterp::on_abort(int, const char*) {
+    // An aborted run starts from its first block next time, as after a reset on a Fanuc control.
+    std::string path = program_path_;
+    close();
+    program_path_ = path;
+    return INTERP_OK;
+}
+
+// ---- running ---------------------------------------------------------------------------------
+
+int NckitInterp::read() {
+    return guarded(error_, [&] {
+        if (program_path_.empty()) return static_cast<int>(INTERP_FILE_NOT_OPEN);
+        if (program_error_) return fail_with(*program_error_);
+        if (ended_) return static_cast<int>(INTERP_ENDFILE);
+        if (pending_ || pending_end_) return static_cast<int>(INTERP_OK);  // read twice: same block
+        if (!interpreter_) {
+            if (int status = start_run(); status != INTERP_OK) return status;
+        }
+        InterpResult result = interpreter_->next();
+        view_ = interpreter_->modal_view();
+        if (auto* move = std::get_if<Move>(&result)) {
+            line_ = static_cast<int>(move->where.line);
+            if (move->sequence_number >= 0) sequence_ = static_cast<int>(move->sequence_number);
+            pending_ = std::move(*move);
+            return static_cast<int>(INTERP_OK);
+        }
+        if (std::holds_alternative<ProgramEnd>(result)) {
+            pending_end_ = true;
+            return static_cast<int>(INTERP_OK);
+        }
+        program_error_ = std::get<Diagnostic>(result);
+        return fail_with(*program_error_);
+    });
+}
+
+int NckitInterp::execute() {
+    return guarded(error_, [&] {
+        if (pending_) {
+            AfterMove after = canon_->emit(*pending_, view_);
+            pending_.reset();
+            return static_cast<int>(after == AfterMove::wait_for_motion ? INTERP_EXECUTE_FINISH : INTERP_OK);
+        }
+        if (pending_end_) {
+            canon_->emit_program_end();
+            pending_end_ = false;
+            ended_ = true;
+            return static_cast<int>(INTERP_EXIT);
+        }
+        return static_cast<int>(INTERP_OK);
+    });
+}
+
+int NckitInterp::read(const char* line) {
+    if (blank(line)) return INTERP_OK;
+    return fail(fmt::format("nckit interpreter: MDI is not supported ('{}'): run commands from a program "
+                            "in AUTO mode",
+                            line));
+}
+
+int NckitInterp::execute(const char* line) {
+    if (line == nullptr) return execute();
+    return read(line);
+}
+
+int NckitInterp::execute(const char* line, int) { return execute(line); }
+
+int NckitInterp::synch() { return INTERP_OK; }
+
+// ---- what LinuxCNC shows ---------------------------------------------------------------------
+
+char* NckitInterp::error_text(int errcode, char* buf, size_t buflen) {
+    return copy_out(errcode > INTERP_MIN_ERROR ? error_ : std::string{}, buf, buflen);
+}
+
+char* NckitInterp::line_text(char* buf, size_t buflen) {
+    // The block's sequence number: rs274 prints it beside each canonical call, as for its own.
+    return copy_out(sequence_ > 0 ? fmt::format("N{}", sequence_) : std::string{}, buf, buflen);
+}
+
+char* NckitInterp::command(char* buf, size_t buflen) { return line_text(buf, buflen); }
+
+size_t NckitInterp::line_length() {
+    char buf[32];
+    return std::strlen(line_text(buf, sizeof buf));
+}
+
+char* NckitInterp::file_name(char* buf, size_t buflen) { return copy_out(program_path_, buf, buflen); }
+char* NckitInterp::file(char* buf, size_t buflen) { return copy_out(program_path_, buf, buflen); }
+
+char* NckitInterp::stack_name(int, char* buf, size_t buflen) { return copy_out(std::string{}, buf, buflen); }
+
+int NckitInterp::sequence_number() { return sequence_; }
+int NckitInterp::line() { return line_; }
+int NckitInterp::call_level() { return 0; }
+
+void NckitInterp::active_g_codes(int g[ACTIVE_G_CODES]) {
+    const ModalView& v = view_;
+    g[0] = sequence_;
+    g[1] = v.motion_code;
+    g[2] = -1;
+    g[3] = v.plane == Plane::xy ? 170 : v.plane == Plane::zx ? 180 : 190;
+    g[4] = 400;
+    g[5] = v.length_factor_mm != 1.0 ? 200 : 210;
+    g[6] = v.incremental ? 910 : 900;
+    g[7] = v.feed_mode == FeedMode::per_revolution ? 950 : 940;
+    g[8] = 540 + 10 * static_cast<int>(v.work_system);
+    g[9] = 490;
+    g[10] = 980;
+    g[11] = v.path.exact_stop ? 611 : 640;
+    g[12] = -1;
+    g[13] = v.constant_surface_speed ? 960 : 970;
+    g[14] = 911;
+    g[15] = v.diameter_mode ? 70 : 80;
+    g[16] = -1;
+}
+
+void NckitInterp::active_m_codes(int m[ACTIVE_M_CODES]) {
+    int direction = canon_ ? canon_->spindle_direction() : 0;
+    bool mist = canon_ && canon_->mist();
+    bool flood = canon_ && canon_->flood();
+    m[0] = sequence_;
+    m[1] = -1;
+    m[2] = direction > 0 ? 3 : direction < 0 ? 4 : 5;
+    m[3] = -1;
+    m[4] = mist ? 7 : flood ? -1 : 9;
+    m[5] = flood ? 8 : -1;
+    m[6] = 48;
+    for (int i = 7; i < ACTIVE_M_CODES; ++i) m[i] = -1;
+}
+
+void NckitInterp::active_settings(double s[ACTIVE_SETTINGS]) {
+    const ModalView& v = view_;
+    s[0] = sequence_;
+    s[1] = v.feed / v.length_factor_mm;
+    s[2] = v.constant_surface_speed ? v.surface_speed_m_min : v.spindle_rpm;
+    s[3] = v.path.tolerance_mm / v.length_factor_mm;
+    s[4] = s[3];
+}
+
+// The state tags of LinuxCNC's own interpreter (modes carried with each motion): none here, so
+// LinuxCNC shows the modes of the block last read, as it does outside AUTO mode.
+int NckitInterp::active_modes(int[ACTIVE_G_CODES], int[ACTIVE_M_CODES], double[ACTIVE_SETTINGS], StateTag const&) {
+    return INTERP_ERROR;
+}
+int NckitInterp::restore_from_tag(StateTag const&) { return INTERP_OK; }
+void NckitInterp::print_state_tag(StateTag const&) {}
+void NckitInterp::set_loglevel(int) {}
+// nckit's main program always restarts at M99, as a Fanuc control's does.
+void NckitInterp::set_loop_on_main_m99(bool) {}
+
+}  // namespace nckit::lcnc
+
+extern "C" __attribute__((visibility("default"))) InterpBase* makeInterp() {
+    return new (std::nothrow) nckit::lcnc::NckitInterp;
+}

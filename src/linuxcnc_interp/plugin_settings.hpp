@@ -1,0 +1,28 @@
+#pragma once
+// The plug-in's settings, read from the [NCKIT] section of LinuxCNC's INI file.
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+
+namespace nckit::lcnc {
+
+struct PluginSettings {
+    std::filesystem::path machine_file;   //!< MACHINE: nckit machine TOML; empty: built-in mill
+    std::filesystem::path library_dir;    //!< LIBRARY: called programs, one file per O number
+    std::filesystem::path retained_file;  //!< RETAINED: keeps #500-#999 between runs; empty: none
+    std::int64_t max_blocks = 10'000'000; //!< MAX_BLOCKS: runaway budget of loops and calls
+    //! G64_TOLERANCE: largest distance from the programmed corner, mm, when the program says G64
+    //! without P (LinuxCNC's own G64 without P keeps no bound). 0: no bound.
+    double g64_tolerance_mm = 0;
+    //! LINE_COMMENTS = 1: a COMMENT("nckit-line N") before the motions of each source line.
+    bool line_comments = false;
+};
+
+//! The settings from `ini_path`, or an error message naming the file, line and key at fault.
+//! Relative paths are taken from the INI file's folder. Without an [NCKIT] section every
+//! setting keeps its default.
+[[nodiscard]] std::optional<std::string> read_plugin_settings(const std::filesystem::path& ini_path,
+                                                              PluginSettings& settings);
+
+}  // namespace nckit::lcnc

@@ -1,0 +1,516 @@
+#!/usr/bin/env python3
+"""Runs one program on a simulated LinuxCNC machine through nckit's interpreter plug-in, headless,
+and checks what the machine did against `nckit moves` of the same program.
+
+Usage: run_machine.py --plugin LIB.so --nckit NCKIT --config EXAMPLE.ini --program FILE
+                      (--expect-end | --expect-alarm N) [--spindle-override F] [--timeout S]
+
+The example configuration (examples/linuxcnc/*_plugin/) is copied into a scratch folder with
+`[TASK] INTERPRETER` pointing at the plug-in just built (absolute path), its [NCKIT] paths made
+absolute, `RETAINED` a scratch file, this very script as the DISPLAY, and a sampler on the
+commanded joint positions (the Xpos/Ypos/Zpos signals of the configuration's HAL file), one row
+per 1 ms servo period. LinuxCNC is started as bench/linuxcnc_planner.py starts it (a terminal
+from `script`; as root RTAPI_UID=65534 and RTAPI_FIFO_PATH in a world-writable folder, since
+LinuxCNC refuses to run as root). The display part, under Debian's /usr/bin/python3 with the
+`linuxcnc` module, resets the E-stop, switches the machine on, opens the program, runs it with
+the spindle override given, and waits until the interpreter is idle and the axes in position,
+keeping every error LinuxCNC reports.
+
+Checks:
+- LinuxCNC's log says `using custom interpreter '<plug-in>'` (else it ran its own interpreter);
+- every sampled position lies on nckit's move path (lines, arcs, spindle-synchronised moves, in
+  machine coordinates) within 1e-4 mm, the samples pass along the path in order;
+- --expect-end: no error, and the last sample is the end of nckit's last move (program end);
+- --expect-alarm N: LinuxCNC reports an error naming `alarm N` and `PROGRAM:LINE:` (the line nckit
+  reports), the machine stops at the end of the last move before that block: nothing of the
+  block moved.
+
+Exit status 0 when every check holds; 1 otherwise, with the reason on stderr. Only one LinuxCNC can
+run on a machine: the run holds an flock on /tmp/linuxcnc.lock (as manual runs do).
+"""
+
+import argparse
+import fcntl
+import json
+import math
+import os
+import re
+import shutil
+import signal
+import subprocess
+import sys
+import tempfile
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+REPO = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, os.path.join(REPO, "bench"))
+import linuxcnc_planner as lp  # noqa: E402  (starting and stopping LinuxCNC, reading samples)
+
+SERVO_PERIOD_S = 0.001
+TOL_MM = 1e-4
+LOCKFILE = "/tmp/linuxcnc.lock"
+SAMPLER_DEPTH = 200000
+
+
+def fail(msg):
+    print(f"run_machine: {msg}", file=sys.stderr)
+    sys.exit(1)
+
+
+# ---------------------------------------------------------------------------------------------
+# Configuration
+# ---------------------------------------------------------------------------------------------
+
+def read_ini(path):
+    """{(SECTION, KEY): [values]} of an INI file (LinuxCNC allows a key more than once)."""
+    values, section = {}, None
+    with open(path) as f:
+        for line in f:
+            s = line.strip()
+            if not s or s[0] in "#;":
+                continue
+            if s.startswith("["):
+                section = s[1:s.index("]")].strip().upper()
+            elif "=" in s and section:
+                k, v = s.split("=", 1)
+                values.setdefault((section, k.strip().upper()), []).append(v.strip())
+    return values
+
+
+def rewrite_ini(text, replace, append):
+    """The INI text with `replace` {(SECTION, KEY): value} set (added when missing) and `append`
+    {SECTION: [lines]} added at the end of those sections."""
+    out, section, done = [], None, set()
+
+    def close_section():
+        if section is None:
+            return
+        for (sec, key), value in replace.items():
+            if sec == section and (sec, key) not in done:
+                out.append(f"{key} = {value}")
+                done.add((sec, key))
+        out.extend(append.get(section, []))
+
+    for line in text.splitlines():
+        s = line.strip()
+        if s.startswith("["):
+            close_section()
+            section = s[1:s.index("]")].strip().upper()
+            out.append(line)
+            continue
+        if section and "=" in s and not s.startswith(("#", ";")):
+            key = s.split("=", 1)[0].strip().upper()
+            if (section, key) in replace:
+                if (section, key) not in done:
+                    out.append(f"{key} = {replace[(section, key)]}")
+                    done.add((section, key))
+                continue
+        out.append(line)
+    close_section()
+    return "\n".join(out) + "\n"
+
+
+def prepare(args, work):
+    """The scratch copy of the example configuration; returns (ini path, axis letters)."""
+    src_dir = os.path.dirname(os.path.abspath(args.config))
+    ini = read_ini(args.config)
+    for name in os.listdir(src_dir):
+        path = os.path.join(src_dir, name)
+        if os.path.isfile(path) and name.endswith((".hal", ".tbl")):
+            shutil.copyfile(path, os.path.join(work, name))
+
+    def absolute(key):
+        v = ini.get(("NCKIT", key))
+        return os.path.normpath(os.path.join(src_dir, v[0])) if v else None
+
+    axes = ini[("TRAJ", "COORDINATES")][0].replace(" ", "").upper()
+    display = os.path.join(work, "display.sh")
+    with open(display, "w") as f:
+        f.write("#!/bin/sh\n# LinuxCNC DISPLAY: the --display mode of run_machine.py\n"
+                f"exec /usr/bin/python3 '{os.path.abspath(__file__)}' --display \"$@\"\n")
+    os.chmod(display, 0o755)
+    replace = {("TASK", "INTERPRETER"): str(args.plugin),
+               ("DISPLAY", "DISPLAY"): display,
+               ("NCKIT", "RETAINED"): os.path.join(work, "retained.vars"),
+               ("RS274NGC", "PARAMETER_FILE"): os.path.join(work, "sim.var")}
+    for key in ("MACHINE", "LIBRARY"):
+        if absolute(key):
+            replace[("NCKIT", key)] = absolute(key)
+    append = {"HAL": [f"HALFILE = {os.path.join(work, 'sampler.hal')}"]}
+    with open(args.config) as f:
+        text = rewrite_ini(f.read(), replace, append)
+    ini_path = os.path.join(work, "sim.ini")
+    with open(ini_path, "w") as f:
+        f.write(text)
+    with open(os.path.join(work, "sampler.hal"), "w") as f:
+        f.write(f"# Commanded joint positions ({' '.join(axes)}), one row per servo period.\n"
+                f"loadrt sampler depth={SAMPLER_DEPTH} cfg={'f' * len(axes)}\n"
+                "addf sampler.0 servo-thread\n"
+                + "".join(f"net {a}pos => sampler.0.pin.{k}\n" for k, a in enumerate(axes)))
+    with open(os.path.join(work, "sim.var"), "w") as f:
+        f.write("")
+    nckit_opts = []
+    if absolute("MACHINE"):
+        nckit_opts += ["--machine", absolute("MACHINE")]
+    if absolute("LIBRARY"):
+        nckit_opts += ["--library", absolute("LIBRARY")]
+    return ini_path, axes, nckit_opts
+
+
+# ---------------------------------------------------------------------------------------------
+# The DISPLAY: runs inside LinuxCNC under /usr/bin/python3
+# ---------------------------------------------------------------------------------------------
+
+def display_main(argv):
+    ini = argv[argv.index("-ini") + 1]
+    work = os.path.dirname(os.path.abspath(ini))
+    with open(os.path.join(work, "run.json")) as f:
+        run = json.load(f)
+    result = {"finished": False, "errors": [], "phase": "start"}
+    sampler = samples_out = None
+    try:
+        import linuxcnc
+        s, c, e = linuxcnc.stat(), linuxcnc.command(), linuxcnc.error_channel()
+        deadline = time.monotonic() + run["run_timeout_s"]
+
+        def poll_errors():
+            while True:
+                msg = e.poll()
+                if not msg:
+                    return
+                kind, text = msg
+                if kind in (linuxcnc.NML_ERROR, linuxcnc.OPERATOR_ERROR):
+                    result["errors"].append(text)
+
+        def wait_for(pred, what, limit_s, stop_on_error=True):
+            end = min(deadline, time.monotonic() + limit_s)
+            while time.monotonic() < end:
+                s.poll()
+                poll_errors()
+                if stop_on_error and result["errors"]:
+                    raise RuntimeError(f"LinuxCNC error while waiting for {what}")
+                if pred():
+                    return
+                time.sleep(0.005)
+            raise RuntimeError(f"timed out waiting for {what}")
+
+        result["phase"] = "task up"
+        end = time.monotonic() + 30
+        while True:
+            try:
+                s.poll()
+                if s.task_state:
+                    break
+            except linuxcnc.error:
+                pass
+            if time.monotonic() > end:
+                raise RuntimeError("task did not come up in 30 s")
+            time.sleep(0.05)
+        result["phase"] = "machine on"
+        c.state(linuxcnc.STATE_ESTOP_RESET)
+        c.wait_complete(5)
+        c.state(linuxcnc.STATE_ON)
+        c.wait_complete(5)
+        wait_for(lambda: s.task_state == linuxcnc.STATE_ON, "machine on", 10)
+        c.mode(linuxcnc.MODE_AUTO)
+        c.wait_complete(5)
+        wait_for(lambda: s.task_mode == linuxcnc.MODE_AUTO, "auto mode", 10)
+        c.spindleoverride(run["spindle_override"], 0)
+        c.wait_complete(5)
+        result["phase"] = "open"
+        c.program_open(run["program"])
+        c.wait_complete(30)
+        poll_errors()
+        if result["errors"]:
+            raise RuntimeError("program_open failed")
+        result["phase"] = "sampling"
+        samples_out = open(os.path.join(work, "samples.txt"), "w")
+        sampler = subprocess.Popen(["halsampler", "-t"], stdout=samples_out,
+                                   stderr=subprocess.DEVNULL)
+        time.sleep(0.2)
+        result["phase"] = "run"
+        t0 = time.monotonic()
+        c.auto(linuxcnc.AUTO_RUN, 0)
+        # An alarm may stop the program at once: errors end the wait, they do not fail it here.
+        wait_for(lambda: s.interp_state != linuxcnc.INTERP_IDLE or s.queue > 0 or not s.inpos
+                 or result["errors"], "the program to start", 10, stop_on_error=False)
+        wait_for(lambda: s.interp_state == linuxcnc.INTERP_IDLE and s.queue == 0 and s.inpos
+                 and s.exec_state == linuxcnc.EXEC_DONE, "the program to finish",
+                 run["run_timeout_s"], stop_on_error=False)
+        result["wall_s"] = time.monotonic() - t0
+        time.sleep(0.3)
+        poll_errors()
+        s.poll()
+        result["position"] = list(s.position)
+        result["finished"] = True
+        result["phase"] = "done"
+    except Exception as ex:
+        result["errors"].append(f"{type(ex).__name__}: {ex}")
+        try:  # where it stood, for the report
+            s.poll()
+            result["state"] = {k: getattr(s, k) for k in (
+                "task_state", "exec_state", "interp_state", "queue", "inpos", "motion_line",
+                "current_line", "read_line", "queue_full", "current_vel")}
+            result["state"]["spindle"] = s.spindle[0]
+        except Exception:
+            pass
+        try:
+            c.abort()
+        except Exception:
+            pass
+    finally:
+        if sampler is not None:
+            sampler.send_signal(signal.SIGINT)
+            try:
+                sampler.wait(5)
+            except subprocess.TimeoutExpired:
+                sampler.kill()
+                sampler.wait(5)
+        if samples_out is not None:
+            samples_out.close()
+        with open(os.path.join(work, "display_result.json"), "w") as f:
+            json.dump(result, f)
+    return 0
+
+
+# ---------------------------------------------------------------------------------------------
+# nckit's path and the distance of a sample from it
+# ---------------------------------------------------------------------------------------------
+
+PLANES = {"xy": ("X", "Y", "Z"), "zx": ("Z", "X", "Y"), "yz": ("Y", "Z", "X")}
+
+
+def nckit_moves(args, nckit_opts, work):
+    """(motions in order, the error line nckit stops at or None)."""
+    cmd = [args.nckit, "moves", args.program, "--json", "--vars",
+           os.path.join(work, "nckit.vars"), *nckit_opts]
+    proc = subprocess.run(cmd, capture_output=True, text=True, timeout=300)
+    motions = [json.loads(l) for l in proc.stdout.splitlines() if l.strip()]
+    motions = [m for m in motions if m["kind"] in ("rapid", "linear", "arc", "sync")]
+    if proc.returncode == 0:
+        return motions, None
+    m = re.search(r":(\d+):\d+: error: (.*)", proc.stderr)
+    if proc.returncode != 2 or not m:
+        fail(f"nckit moves failed: {proc.stderr.strip()[:300]}")
+    return motions, (int(m.group(1)), m.group(2))
+
+
+def distance(p, mo, axes):
+    """Distance in mm of point p (axis -> mm) from motion mo (start and end given)."""
+    a, b = mo["start"], mo["end"]
+    if mo["kind"] != "arc":
+        d = [b.get(x, 0.0) - a.get(x, 0.0) for x in axes]
+        w = [p[x] - a.get(x, 0.0) for x in axes]
+        dd = sum(v * v for v in d)
+        t = 0.0 if dd == 0 else max(0.0, min(1.0, sum(u * v for u, v in zip(d, w)) / dd))
+        return math.sqrt(sum((w[i] - t * d[i]) ** 2 for i in range(len(axes))))
+    f, s, n = PLANES[mo["plane"]]
+    c = mo["center"]
+    r = math.hypot(a[f] - c[f], a[s] - c[s])
+    ang = lambda q: math.atan2(q[s] - c[s], q[f] - c[f])
+    a0, a1, ap = ang(a), ang(b), ang(p)
+    ccw = mo["dir"] == "ccw"
+    sweep = ((a1 - a0) if ccw else (a0 - a1)) % (2 * math.pi)
+    turns = mo.get("turns", 1) or 1
+    if sweep < 1e-12:
+        sweep = 2 * math.pi
+    sweep += 2 * math.pi * (turns - 1)
+    at = ((ap - a0) if ccw else (a0 - ap)) % (2 * math.pi)
+    best = float("inf")
+    k = 0
+    while at + 2 * math.pi * k <= sweep + 1e-12:  # every turn of a multi-turn helix
+        t = (at + 2 * math.pi * k) / sweep
+        dn = p.get(n, 0.0) - (a.get(n, 0.0) + t * (b.get(n, 0.0) - a.get(n, 0.0))) if n in p else 0.0
+        best = min(best, math.hypot(abs(math.hypot(p[f] - c[f], p[s] - c[s]) - r), dn))
+        k += 1
+    ends = [math.sqrt(sum((p[x] - q.get(x, 0.0)) ** 2 for x in axes)) for q in (a, b)]
+    return min([best] + ends)
+
+
+def check_path(rows, motions, axes):
+    """Follows the samples along the path in order. Returns (worst distance of a sample from
+    nckit's path, mm; index of the last motion reached; {motion kind: worst distance})."""
+    index, worst, by_kind = 0, 0.0, {}
+    window = 400  # motions looked ahead per sample; a servo tick passes far fewer
+    for row in rows:
+        p = dict(zip(axes, row))
+        best, best_i = float("inf"), index
+        # Most samples lie on the current motion or the next: look there first.
+        for i in range(index, min(len(motions), index + window)):
+            d = distance(p, motions[i], axes)
+            if d < best - 1e-12:
+                best, best_i = d, i
+            if best <= TOL_MM / 10 or (i >= index + 2 and best <= TOL_MM):
+                break
+        kind = motions[best_i]["kind"]
+        by_kind[kind] = max(by_kind.get(kind, 0.0), best)
+        worst = max(worst, best)
+        index = best_i
+    return worst, index, by_kind
+
+
+# ---------------------------------------------------------------------------------------------
+# The parent
+# ---------------------------------------------------------------------------------------------
+
+def run_linuxcnc(args, work, ini_path, env):
+    log_path = os.path.join(work, "linuxcnc.log")
+    pidfile = os.path.join(work, "linuxcnc.pid")
+    clean = False
+    with open(log_path, "w") as log:
+        proc = subprocess.Popen(
+            ["script", "-qec", f"echo $$ > '{pidfile}'; exec linuxcnc '{ini_path}'", "/dev/null"],
+            cwd=work, env=env, stdin=subprocess.DEVNULL, stdout=log, stderr=subprocess.STDOUT,
+            start_new_session=True)
+        try:
+            proc.wait(args.timeout)
+            clean = proc.returncode == 0
+        except subprocess.TimeoutExpired:
+            print(f"run_machine: timed out after {args.timeout} s, stopping LinuxCNC",
+                  file=sys.stderr)
+            lp.stop_linuxcnc(proc, pidfile, 20)
+        finally:
+            if proc.poll() is None:
+                lp.stop_linuxcnc(proc, pidfile, 20)
+        if not clean:
+            lp.force_unload(env, log)
+    with open(log_path, errors="replace") as f:
+        return f.read()
+
+
+def parent_main(args):
+    args.program = os.path.abspath(args.program)
+    args.plugin = os.path.abspath(args.plugin)
+    args.nckit = os.path.abspath(args.nckit)
+    for path in (args.program, args.plugin, args.nckit, args.config):
+        if not os.path.isfile(path):
+            fail(f"{path} not found")
+    for tool in ("linuxcnc", "halsampler", "script", "halrun"):
+        if shutil.which(tool) is None:
+            fail(f"'{tool}' not on PATH: install linuxcnc-uspace (scripts/deps.sh)")
+    work = tempfile.mkdtemp(prefix="nckit-plugin-machine-")
+    env = dict(os.environ)
+    lock = open(LOCKFILE, "a")
+    try:
+        fcntl.flock(lock, fcntl.LOCK_EX)  # one LinuxCNC at a time, manual runs included
+        os.chmod(work, 0o755)
+        ini_path, axes, nckit_opts = prepare(args, work)
+        program = os.path.join(work, os.path.basename(args.program))
+        shutil.copyfile(args.program, program)
+        os.chmod(program, 0o644)
+        with open(os.path.join(work, "run.json"), "w") as f:
+            json.dump({"program": program, "spindle_override": args.spindle_override,
+                       "run_timeout_s": max(10.0, args.timeout - 30.0)}, f)
+        if os.geteuid() == 0:
+            fifo = os.path.join(work, "rtapi_fifo")
+            os.makedirs(fifo)
+            os.chmod(fifo, 0o1777)
+            env["RTAPI_UID"] = "65534"
+            env["RTAPI_FIFO_PATH"] = os.path.join(fifo, "rtapi_fifo")
+            for name in os.listdir(work):  # the unprivileged LinuxCNC writes its files here
+                os.chmod(os.path.join(work, name), 0o777 if os.path.isdir(os.path.join(work, name)) else 0o666)
+            os.chmod(os.path.join(work, "display.sh"), 0o755)
+        t0 = time.monotonic()
+        log = run_linuxcnc(args, work, ini_path, env)
+        wall = time.monotonic() - t0
+        if f"using custom interpreter '{args.plugin}'" not in log:
+            fail(f"LinuxCNC did not load the plug-in (no \"using custom interpreter\"); log tail:\n"
+                 f"{log[-2000:]}")
+        result_path = os.path.join(work, "display_result.json")
+        if not os.path.exists(result_path):
+            fail(f"LinuxCNC did not run the program; log tail:\n{log[-2000:]}")
+        with open(result_path) as f:
+            disp = json.load(f)
+        rows, gaps = read_samples(os.path.join(work, "samples.txt"), len(axes))
+        if gaps:
+            fail(f"halsampler lost samples ({gaps} gaps)")
+        motions, error = nckit_moves(args, nckit_opts, work)
+        if not rows:
+            fail("no samples")
+        if not motions:
+            fail("nckit moves printed no motion")
+        worst, reached, by_kind = check_path(rows, motions, axes)
+        last = dict(zip(axes, rows[-1]))
+        end = motions[-1]["end"] if motions else {a: 0.0 for a in axes}
+        off = max(abs(last[a] - end.get(a, 0.0)) for a in axes)
+        summary = {"program": os.path.basename(args.program), "samples": len(rows),
+                   "motions": len(motions), "worst_off_path_mm": worst,
+                   "last_sample_from_end_mm": off, "linuxcnc_wall_s": disp.get("wall_s"),
+                   "worst_off_path_by_kind_mm": by_kind,
+                   "run_s": round(wall, 1), "errors": disp["errors"]}
+        if worst > args.tolerance_mm:
+            fail(f"a sampled position lies {worst * 1000:.4f} um off nckit's path (allowed "
+                 f"{args.tolerance_mm * 1000:.4f} um): {json.dumps(summary)}")
+        if args.expect_end:
+            if disp["errors"] or not disp["finished"]:
+                fail(f"LinuxCNC reported errors: {disp['errors']} (phase {disp['phase']})")
+            if error is not None:
+                fail(f"nckit stops the program at line {error[0]}: {error[1]}")
+            if reached != len(motions) - 1 or off > TOL_MM:
+                fail(f"the machine stopped at {last}, motion {reached + 1} of {len(motions)}: "
+                     f"not at the program's end {end}")
+        else:
+            if error is None:
+                fail("nckit runs the program to its end: no alarm to test")
+            line, message = error
+            wanted = f"{os.path.basename(args.program)}:{line}:"
+            hits = [t for t in disp["errors"] if wanted in t and f"alarm {args.expect_alarm}" in t]
+            if not hits:
+                fail(f"LinuxCNC did not report alarm {args.expect_alarm} at {wanted} "
+                     f"(nckit: line {line}: {message}); it reported {disp['errors']}")
+            if off > TOL_MM or reached != len(motions) - 1:
+                fail(f"the machine stopped at {last}, not at the end of the last move before "
+                     f"the alarm block {end}")
+            summary["alarm"] = hits[0]
+        print(json.dumps(summary))
+        return 0
+    finally:
+        lock.close()
+        if args.keep:
+            os.makedirs(args.keep, exist_ok=True)
+            for name in os.listdir(work):
+                src = os.path.join(work, name)
+                if os.path.isfile(src) and not name.startswith("rtapi"):
+                    shutil.copy2(src, os.path.join(args.keep, name))
+        shutil.rmtree(work, ignore_errors=True)
+
+
+def read_samples(path, n):
+    rows, last_tag, gaps = [], None, 0
+    with open(path) as f:
+        for line in f:
+            parts = line.split()
+            if len(parts) != 1 + n:
+                if line.strip() == "overrun":
+                    gaps += 1
+                continue
+            tag = int(parts[0])
+            if last_tag is not None and tag != last_tag + 1:
+                gaps += 1
+            last_tag = tag
+            rows.append(tuple(float(v) for v in parts[1:]))
+    return rows, gaps
+
+
+def main():
+    if len(sys.argv) > 1 and sys.argv[1] == "--display":
+        return display_main(sys.argv[2:])
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--plugin", required=True)
+    ap.add_argument("--nckit", required=True)
+    ap.add_argument("--config", required=True, help="example INI (examples/linuxcnc/...)")
+    ap.add_argument("--program", required=True)
+    mode = ap.add_mutually_exclusive_group(required=True)
+    mode.add_argument("--expect-end", action="store_true")
+    mode.add_argument("--expect-alarm", type=int, metavar="N")
+    ap.add_argument("--spindle-override", type=float, default=1.0)
+    ap.add_argument("--tolerance-mm", type=float, default=TOL_MM,
+                    help="largest distance of a sample from nckit's path (default %(default)s)")
+    ap.add_argument("--timeout", type=float, default=600.0)
+    ap.add_argument("--keep", metavar="DIR", help="keep the configuration, log and samples here")
+    return parent_main(ap.parse_args())
+
+
+if __name__ == "__main__":
+    sys.exit(main())
