@@ -1,6 +1,7 @@
 #include "common.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -26,6 +27,19 @@ void add_machine_options(CLI::App& verb, MachineOptions& options) {
 namespace {
 //! The run uses the built-in mill: errors a lathe program gets on it add a hint.
 bool default_machine_in_use = false;
+//! The program's first 4 KiB name lathe codes (G18 G7 G32 G33 G95 G96): a hint fits its errors.
+bool program_looks_like_lathe = false;
+
+bool names_lathe_codes(const std::string& head) {
+    std::string upper;
+    for (char c : head) {
+        if (c != ' ' && c != '\t') upper += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    }
+    for (const char* code : {"G18", "G7X", "G7\n", "G32", "G33", "G95", "G96"}) {
+        if (upper.find(code) != std::string::npos) return true;
+    }
+    return false;
+}
 
 //! Edits (insert, delete, replace) between two words: how far a typo is from a verb.
 std::size_t edit_distance(const std::string& a, const std::string& b) {
@@ -71,9 +85,10 @@ void print_diagnostic(const Diagnostic& diagnostic) {
     std::fprintf(stderr, "%s\n", format_diagnostic(diagnostic).c_str());
     // The built-in machine is a mill: a lathe program's X-Z moves and spindle codes fail on it.
     static bool hinted = false;
-    if (default_machine_in_use && !hinted && diagnostic.severity == Severity::error &&
-        (diagnostic.code == "unknown-axis" || diagnostic.code == "travel" || diagnostic.code == "spindle-limit" ||
-         diagnostic.code == "bad-combination" || diagnostic.code == "unsupported")) {
+    if (default_machine_in_use && program_looks_like_lathe && !hinted && diagnostic.severity == Severity::error &&
+        (diagnostic.code == "unknown-axis" || diagnostic.code == "travel-limit" ||
+         diagnostic.code == "spindle-limit" || diagnostic.code == "bad-combination" ||
+         diagnostic.code == "bad-arc" || diagnostic.code == "unsupported-word")) {
         hinted = true;
         std::fprintf(stderr, "%s: note: no --machine given, so this ran on the built-in 3-axis mill; a lathe "
                              "program needs its lathe, e.g. --machine examples/machines/lathe.toml\n",
@@ -112,6 +127,7 @@ std::optional<Diagnostic> program_file_mistake(const std::string& path) {
     if (first == std::string::npos && std::filesystem::file_size(path, ec) <= head.size() + 3) {
         return error_at(make_location(name, 1, 1), "empty-program", "the program is empty: no blocks to run");
     }
+    program_looks_like_lathe = names_lathe_codes(head);
     const bool toml_name = std::filesystem::path(path).extension() == ".toml";
     // No block of a program starts with '[' (Macro B brackets follow a word or '#').
     const bool toml_text = first != std::string::npos && head[first] == '[';
