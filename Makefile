@@ -3,13 +3,22 @@ BUILD      := build/release
 NCKIT      := $(BUILD)/src/nckit
 DEMO       := examples/01_mill_pocket.ngc
 JOBS       ?= 2
+PREFIX     ?= /usr/local
+# Seconds each fuzz target runs under `make fuzz` (CI: 60).
+FUZZ_SECONDS ?= 30
 
-.PHONY: all deps configure build run test test-unit test-asan bench clean hal hal-install install-linuxcnc-plugin
+.PHONY: all deps deps-test configure build build-nckit run install test test-unit test-asan bench fuzz clean \
+        hal hal-install install-linuxcnc-plugin
 
 all: build
 
+# Package groups (scripts/deps.sh): `make run` needs the build group only; LinuxCNC, the test
+# tools and Google Benchmark come with `make test` and `make bench`.
 deps:
-	@bash scripts/deps.sh
+	@bash scripts/deps.sh build
+
+deps-test:
+	@bash scripts/deps.sh build test linuxcnc
 
 configure: deps
 	@cmake --preset release >/dev/null
@@ -17,7 +26,15 @@ configure: deps
 build: configure
 	@cmake --build --preset release -j $(JOBS)
 
-run: build
+# The command line alone: what the demo and `make install` need.
+build-nckit: configure
+	@cmake --build --preset release -j $(JOBS) --target nckit
+
+install: build-nckit
+	@cmake --install $(BUILD) --prefix $(PREFIX) >/dev/null
+	@echo "nckit installed as $(PREFIX)/bin/nckit"
+
+run: build-nckit
 	@echo "== nckit moves $(DEMO) --summary"
 	@$(NCKIT) moves $(DEMO) --summary
 	@echo "== first moves"
@@ -34,14 +51,16 @@ run: build
 	@echo "== oval piston on a fast tool servo at 2500 rpm: no compensation, feedforward, learning"
 	@$(NCKIT) piston examples/piston/piston.toml
 
-test: build
+test: deps-test
+	@cmake --preset release >/dev/null
+	@cmake --build --preset release -j $(JOBS)
 	@ctest --preset release
 
 test-unit: build
 	@ctest --preset release -L unit
 
 # The unit tests again under AddressSanitizer and UndefinedBehaviorSanitizer.
-test-asan: deps
+test-asan: deps-test
 	@cmake --preset asan >/dev/null
 	@cmake --build --preset asan -j $(JOBS)
 	@ctest --preset asan
@@ -52,15 +71,23 @@ install-linuxcnc-plugin: build
 	@install -m 644 $(BUILD)/src/linuxcnc_interp/libnckit_linuxcnc.so /usr/lib/linuxcnc/
 	@echo "installed /usr/lib/linuxcnc/libnckit_linuxcnc.so"
 
-bench: build
-	@bash bench/run_all.sh
-
 # The LinuxCNC HAL components (docs/hal-cam.md); hal-install puts them where loadrt looks.
 hal: configure
 	@cmake --build --preset release -j $(JOBS) --target hal
 
 hal-install: configure
 	@cmake --build --preset release -j $(JOBS) --target hal-install
+
+bench:
+	@bash scripts/deps.sh build bench linuxcnc
+	@cmake --preset release >/dev/null
+	@cmake --build --preset release -j $(JOBS)
+	@bash bench/run_all.sh
+
+# libFuzzer targets (clang, ASan + UBSan) run FUZZ_SECONDS each; any finding fails (fuzz/README.md).
+fuzz:
+	@bash scripts/deps.sh build fuzz
+	@bash fuzz/run_all.sh $(FUZZ_SECONDS)
 
 clean:
 	@rm -rf build

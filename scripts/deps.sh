@@ -1,30 +1,66 @@
 #!/usr/bin/env bash
-# Installs every Debian package nckit needs to build, test and benchmark. Idempotent: it asks
-# apt only for what is missing, so a second run costs a few dpkg look-ups.
+# Installs the Debian packages nckit needs, by named group:
+#   scripts/deps.sh               the build group (what `make run` needs)
+#   scripts/deps.sh build test    the groups named
+#   scripts/deps.sh all           every group
+# Idempotent: apt is asked only for what is missing, so a second run costs a few dpkg look-ups.
+# To add a package: put it in its group, after a comment line saying what uses it (a '#' starts a
+# comment inside a group too).
 set -euo pipefail
 
-packages=(
-  build-essential cmake ninja-build pkg-config
-  libfmt-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
-  libeigen3-dev libmuparser-dev libcpp-httplib-dev
-  libgtest-dev libgmock-dev libbenchmark-dev
-  python3
+declare -A groups
+# The compiler, CMake and the libraries nckit links; CMake's configure step also looks for
+# nlohmann-json and GoogleTest (the release preset configures the tests with the rest).
+groups[build]="
+  build-essential cmake ninja-build
+  libfmt-dev libcli11-dev libtomlplusplus-dev
+  libeigen3-dev
+  libmuparser-dev
   # dxflib reads the DXF outlines and motifs of nckit pattern.
   libdxflib-dev
-  # GNU time: wall time and peak memory in bench/throughput_vs_linuxcnc.sh.
+  nlohmann-json3-dev
+  libgtest-dev libgmock-dev
+"
+# The CLI and program tests (python3) and GNU time (peak memory in the streaming tests and
+# bench/throughput_vs_linuxcnc.sh).
+groups[test]="
+  python3
   time
-  # LinuxCNC's rs274 interpreter is the reference the program tests compare against.
+"
+# Google Benchmark for bench/.
+groups[bench]="
+  libbenchmark-dev
+"
+# LinuxCNC's rs274 interpreter: the reference the program tests and the throughput benchmark
+# compare against. Large, so `make run` does not install it; `make test` and `make bench` do.
+groups[linuxcnc]="
   linuxcnc-uspace
   # hal.h/rtapi.h and Makefile.modinc (the nckit_cam and nckit_servo HAL components, hal/);
   # interp_base.hh and canon.hh (the nckit interpreter plug-in, src/linuxcnc_interp/).
   linuxcnc-uspace-dev
   # boost/noncopyable.hpp, which interp_base.hh includes.
   libboost-dev
-)
+"
+# clang with libFuzzer and the sanitizer runtimes: `make fuzz` and CI's fuzzing.
+groups[fuzz]="
+  clang
+  libclang-rt-14-dev
+"
+
+wanted=("$@")
+if ((${#wanted[@]} == 0)); then wanted=(build); fi
+if [[ ${wanted[0]} == all ]]; then wanted=(build test bench linuxcnc fuzz); fi
 
 missing=()
-for p in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+for group in "${wanted[@]}"; do
+  if [[ -z ${groups[$group]+set} ]]; then
+    echo "deps: unknown group '$group' (groups: ${!groups[*]} all)" >&2
+    exit 2
+  fi
+  # Comments inside a group end at the line's end; what is left are package names.
+  for p in $(sed 's/#.*//' <<<"${groups[$group]}"); do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  done
 done
 
 if ((${#missing[@]} == 0)); then
@@ -35,5 +71,6 @@ echo "deps: installing ${missing[*]}"
 sudo_cmd=()
 if [[ $(id -u) -ne 0 ]]; then sudo_cmd=(sudo); fi
 export DEBIAN_FRONTEND=noninteractive
-"${sudo_cmd[@]}" apt-get update -qq
-"${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+"${sudo_cmd[@]}" apt-get update
+# apt's own progress: LinuxCNC alone is a few hundred MB.
+"${sudo_cmd[@]}" apt-get install -y --no-install-recommends -o Dpkg::Progress-Fancy=1 "${missing[@]}"

@@ -142,8 +142,8 @@ void add_crosshatch_verb(CLI::App& app, int& exit_status) {
     verb->add_flag("--json", options->json, "print the report as JSON");
     verb->add_option("--svg", options->svg, "draw the unrolled bore with the laser tracks (SVG)");
     verb->add_option("-o,--output", options->gcode, "write the scan as G-code (Z and a rotary A axis)");
-    verb->add_option("--steps", options->steps, "write both motors' step streams (axis 0 feed, 1 rotation)");
-    verb->add_flag("--text", options->text, "--steps as text: t_ns axis dir port");
+    CLI::Option* steps = verb->add_option("--steps", options->steps, "write both motors' step streams (axis 0 feed, 1 rotation)");
+    verb->add_flag("--text", options->text, "--steps as text: t_ns axis dir port")->needs(steps);
     verb->callback([options, &exit_status] { exit_status = run_crosshatch(*options); });
 }
 

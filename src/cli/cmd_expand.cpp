@@ -58,7 +58,7 @@ int run_expand(const ExpandOptions& options) {
 void add_expand_verb(CLI::App& app, int& exit_status) {
     auto options = std::make_shared<ExpandOptions>();
     CLI::App* verb = app.add_subcommand("expand", "Resolve macros and calls into a plain program, one move per block");
-    verb->add_option("FILE", options->program, "NC program")->required();
+    verb->add_option("FILE", options->program, "NC program ('-': standard input)")->required();
     verb->add_option("-o,--output", options->output, "write the program here (default: standard output)");
     add_machine_options(*verb, options->machine);
     verb->callback([options, &exit_status] { exit_status = run_expand(*options); });

@@ -19,6 +19,7 @@ struct MovesOptions {
     MachineOptions machine;
     bool json = false;
     bool summary = false;
+    bool save_vars = false;
 };
 
 void print_summary(const MoveSummary& s, const MachineConfig& machine) {
@@ -34,9 +35,10 @@ void print_summary(const MoveSummary& s, const MachineConfig& machine) {
 }
 
 int run_moves(const MovesOptions& options) {
-    auto interpreter = open_program_or_report(options.program, options.machine);
+    auto interpreter = open_program_or_report(options.program, options.machine, options.save_vars);
     if (!interpreter) return exit_bad_input;
     const MachineConfig& machine = interpreter->machine();
+    const std::uint64_t total_bytes = regular_file_bytes(options.program);
     std::string buffer;
     buffer.reserve(1 << 17);
     MoveSummary summary;
@@ -46,6 +48,9 @@ int run_moves(const MovesOptions& options) {
     };
     // Interpreting runs on a second thread while this one prints: on two cores a long program
     // takes little more than the slower of the two.
+    // Counted here, on the printing thread; the share of the file read is the pump's to know.
+    Progress progress("nckit moves", "moves", options.machine.quiet);
+    std::int64_t count = 0;
     MovePump pump(*interpreter);
     for (std::vector<InterpResult> batch = pump.next_batch(); !batch.empty(); batch = pump.next_batch()) {
         for (const InterpResult& result : batch) {
@@ -56,6 +61,7 @@ int run_moves(const MovesOptions& options) {
             }
             const auto* move = std::get_if<Move>(&result);
             if (move == nullptr) break;  // ProgramEnd
+            progress.update(++count, pump.fraction_read(total_bytes));
             if (options.summary) {
                 summary.add(*move);
                 continue;
@@ -70,6 +76,7 @@ int run_moves(const MovesOptions& options) {
         }
     }
     flush();
+    progress.finish();
     if (options.summary) print_summary(summary, machine);
     return 0;
 }
@@ -79,10 +86,12 @@ int run_moves(const MovesOptions& options) {
 void add_moves_verb(CLI::App& app, int& exit_status) {
     auto options = std::make_shared<MovesOptions>();
     CLI::App* verb = app.add_subcommand("moves", "Print the moves a program makes, in machine coordinates");
-    verb->add_option("FILE", options->program, "NC program")->required();
+    verb->add_option("FILE", options->program, "NC program ('-': standard input)")->required();
     add_machine_options(*verb, options->machine);
-    verb->add_flag("--json", options->json, "one JSON object per line");
-    verb->add_flag("--summary", options->summary, "totals instead of the moves");
+    CLI::Option* json = verb->add_flag("--json", options->json, "one JSON object per line");
+    verb->add_flag("--summary", options->summary, "totals instead of the moves (text)")->excludes(json);
+    verb->add_flag("--save-vars", options->save_vars,
+                   "write #500-#999 back to their file at the end (--vars, or the machine file with .vars)");
     verb->callback([options, &exit_status] { exit_status = run_moves(*options); });
 }
 

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "common.hpp"
+#include "partial_file.hpp"
 #include "nckit/process/notch.hpp"
 #include "verbs.hpp"
 
@@ -69,6 +70,15 @@ void print_text(const NotchJob& job, const std::string& program) {
 int run_notch(const NotchCliOptions& options) {
     auto interpreter = open_program_or_report(options.program, options.machine, false);
     if (!interpreter) return exit_bad_input;
+    if (interpreter->machine().laser_on_mcodes.empty()) {
+        // Without a laser-on code there is no cut to find: "0 notch cut(s)" would be a silent no-op.
+        fmt::print(stderr,
+                   "{}: error: machine '{}' names no laser code: give [machine] laser_on_mcodes (and "
+                   "laser_off_mcodes), e.g. --machine examples/machines/notcher.toml\n",
+                   options.machine.machine.empty() ? "nckit notch" : options.machine.machine,
+                   interpreter->machine().name);
+        return exit_bad_input;
+    }
     std::vector<Move> moves;
     for (;;) {
         InterpResult result = interpreter->next();
@@ -85,16 +95,10 @@ int run_notch(const NotchCliOptions& options) {
         return exit_bad_input;
     }
     if (!options.output.empty()) {
-        const std::filesystem::path temporary = options.output + ".partial";
-        std::FILE* out = std::fopen(temporary.c_str(), "wb");
-        const bool written = out != nullptr &&
-                             std::fwrite(job->program.data(), 1, job->program.size(), out) == job->program.size();
-        if (out == nullptr || std::fclose(out) != 0 || !written) {
-            std::filesystem::remove(temporary);
-            fmt::print(stderr, "{}:0:0: error: cannot write\n", options.output);
-            return exit_bad_input;
-        }
-        std::filesystem::rename(temporary, options.output);
+        std::optional<PartialFile> out = PartialFile::create(options.output);
+        if (!out) return exit_bad_input;
+        out->write(job->program);
+        if (!out->commit()) return exit_bad_input;
     }
     if (options.json) {
         print_json(*job);
@@ -110,7 +114,7 @@ void add_notch_verb(CLI::App& app, int& exit_status) {
     auto options = std::make_shared<NotchCliOptions>();
     CLI::App* verb = app.add_subcommand(
         "notch", "Laser notching: place each laser-on M-code a run-up before its cut so the cut runs at feed");
-    verb->add_option("FILE", options->program, "NC program")->required();
+    verb->add_option("FILE", options->program, "NC program ('-': standard input)")->required();
     verb->add_option("-o,--output", options->output, "write the rewritten program here");
     add_machine_options(*verb, options->machine);
     verb->add_flag("--json", options->json, "print the report (with the speed profiles) as one JSON object");

@@ -27,6 +27,7 @@ struct PistonOptions {
     std::string job;
     bool json = false;
     std::string svg_dir;
+    std::string svg;
     std::string cam_table;
     std::string trace;
     int trace_turns = 3;
@@ -128,11 +129,12 @@ int run_piston(PistonOptions options) {
         outputs.emplace_back(options.cam_table, std::move(csv).str());
     }
     if (!options.trace.empty()) outputs.emplace_back(options.trace, format_fts_trace_csv(simulation->fts.trace));
+    if (!options.svg.empty()) outputs.emplace_back(options.svg, piston_section_svg(job));
     if (!options.svg_dir.empty()) {
         std::error_code error;
         std::filesystem::create_directories(options.svg_dir, error);
         if (error) {
-            fmt::print(stderr, "{}:0:0: error: cannot create the directory: {}\n", options.svg_dir, error.message());
+            fmt::print(stderr, "{}: cannot write: {} (cannot create the folder)\n", options.svg_dir, error.message());
             return exit_bad_input;
         }
         const std::filesystem::path dir(options.svg_dir);
@@ -157,8 +159,9 @@ void add_piston_verb(CLI::App& app, int& exit_status) {
     CLI::App* verb = app.add_subcommand("piston", "Oval piston turning on a fast tool servo: cam table, profile error");
     verb->add_option("JOB", options->job, "job file (TOML, tables [piston] and [servo])")->required();
     verb->add_flag("--json", options->json, "print the report as JSON");
-    verb->add_option("--svg", options->svg_dir,
-                     "write section.svg, drawing.svg and turn_error.svg into DIR (created if missing)");
+    verb->add_option("--svg", options->svg, "draw the section (measured against drawn) into this SVG file");
+    verb->add_option("--svg-dir", options->svg_dir,
+                     "write section.svg, drawing.svg and turn_error.svg into this folder (created if missing)");
     verb->add_option("--cam-table", options->cam_table,
                      "write the drawn profile at the stations, every degree: z_mm,phi_deg,radius_mm");
     CLI::Option* trace = verb->add_option(

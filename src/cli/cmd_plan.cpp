@@ -41,15 +41,15 @@ std::string sync_json(const SyncReport& sync) {
 void print_report(const PlanOptions& options, const MachineConfig& machine, double cycle_time_s,
                   std::int64_t moves, const AxisPeaks& peaks, const SyncReport& sync) {
     if (options.json) {
-        std::string out = fmt::format("{{\"cycle_time_s\":{},\"moves\":{},{},\"axes\":{{", cycle_time_s, moves,
+        std::string out = fmt::format("{{\"cycle_time_s\":{},\"moves\":{},{},\"axes\":{{", json_number(cycle_time_s), moves,
                                       sync_json(sync));
         bool first = true;
         for (std::size_t i = 0; i < axis_count; ++i) {
             auto axis = static_cast<Axis>(i);
             if (machine.find(axis) == nullptr) continue;
             out += fmt::format("{}\"{}\":{{\"max_velocity\":{},\"max_acceleration\":{},\"max_jerk\":{}}}",
-                               first ? "" : ",", letter(axis), peaks.max_velocity[axis],
-                               peaks.max_acceleration[axis], peaks.max_jerk[axis]);
+                               first ? "" : ",", letter(axis), json_number(peaks.max_velocity[axis]),
+                               json_number(peaks.max_acceleration[axis]), json_number(peaks.max_jerk[axis]));
             first = false;
         }
         fmt::print("{}}}}}\n", out);
@@ -72,6 +72,7 @@ void print_report(const PlanOptions& options, const MachineConfig& machine, doub
 int run_plan(const PlanOptions& options) {
     auto interpreter = open_program_or_report(options.program, options.machine, false);
     if (!interpreter) return exit_bad_input;
+    ProgramProgress progress("plan", options.program, options.machine.quiet);
     const MachineConfig& machine = interpreter->machine();
     PlannerOptions planner_options;
     if (!options.profile.empty()) {
@@ -111,7 +112,7 @@ int run_plan(const PlanOptions& options) {
             ++moves;
         }
     };
-    if (!plan_program(*interpreter, planner, on_piece, on_move)) return exit_bad_input;
+    if (!plan_program(*interpreter, planner, on_piece, on_move, &progress)) return exit_bad_input;
     if (trace_file) {
         trace.finish(trace_text);
         trace_file->write(trace_text);
@@ -126,24 +127,17 @@ int run_plan(const PlanOptions& options) {
 void add_plan_verb(CLI::App& app, int& exit_status) {
     auto options = std::make_shared<PlanOptions>();
     CLI::App* verb = app.add_subcommand("plan", "Plan a program's motion: cycle time and each axis's peaks");
-    verb->add_option("FILE", options->program, "NC program")->required();
+    verb->add_option("FILE", options->program, "NC program ('-': standard input)")->required();
     add_machine_options(*verb, options->machine);
     verb->add_option("--profile", options->profile, "scurve (jerk-limited) or trapezoid; default: the machine's")
         ->check(CLI::IsMember({"scurve", "trapezoid"}));
     verb->add_flag("--json", options->json, "print the report as one JSON object");
     verb->add_option("--trace", options->trace, "write the trajectory as CSV, sampled every period");
-    verb->add_option("--period", options->period_s, "trace sampling period, s (default: the machine's servo period)")
+    verb->add_option("--period", options->period_s, "trace sampling period S, seconds, > 0 (default: the machine's servo_period_s)")
         ->check(CLI::PositiveNumber);
-    verb->add_option("--override", options->override_pct, "feed override, percent (0 < PCT <= 200)")
-        ->check(CLI::Range(0.0, 200.0));
-    verb->callback([options, &exit_status] {
-        if (options->override_pct <= 0) {
-            fmt::print(stderr, "error: --override must be above 0 %\n");
-            exit_status = exit_bad_input;
-            return;
-        }
-        exit_status = run_plan(*options);
-    });
+    verb->add_option("--override", options->override_pct, "feed override PCT, percent, 1-200 (default 100; rapids keep theirs)")
+        ->check(CLI::Range(1.0, 200.0));
+    verb->callback([options, &exit_status] { exit_status = run_plan(*options); });
 }
 
 }  // namespace nckit::cli

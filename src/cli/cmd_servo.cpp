@@ -59,6 +59,7 @@ void print_report(const ServoOptions& options, const MachineConfig& machine, con
 int run_servo(const ServoOptions& options) {
     auto interpreter = open_program_or_report(options.program, options.machine, false);
     if (!interpreter) return exit_bad_input;
+    ProgramProgress progress("servo", options.program, options.machine.quiet);
     const MachineConfig& machine = interpreter->machine();
     drive::ServoFollower follower(machine);
     if (!follower.has_servo_axes()) {
@@ -85,7 +86,8 @@ int run_servo(const ServoOptions& options) {
         };
     }
     // A bad program reports nothing: returning drops the unfinished trace with its PartialFile.
-    if (!plan_program(*interpreter, planner, [&](const TrajectoryPiece& piece) { follower.add(piece, sink); })) {
+    if (!plan_program(*interpreter, planner, [&](const TrajectoryPiece& piece) { follower.add(piece, sink); },
+                      {}, &progress)) {
         return exit_bad_input;
     }
     follower.finish(sink);
@@ -103,7 +105,7 @@ void add_servo_verb(CLI::App& app, int& exit_status) {
     auto options = std::make_shared<ServoOptions>();
     CLI::App* verb =
         app.add_subcommand("servo", "Drive the servo axes with a program's setpoints: each axis's following error");
-    verb->add_option("FILE", options->program, "NC program")->required();
+    verb->add_option("FILE", options->program, "NC program ('-': standard input)")->required();
     add_machine_options(*verb, options->machine);
     verb->add_flag("--json", options->json, "print the report as one JSON object");
     verb->add_option("--trace", options->trace,

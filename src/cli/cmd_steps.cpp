@@ -11,8 +11,9 @@
 //   "set_next_step_dir AXIS DIR" before each change of direction, and
 //   "queue_step AXIS INTERVAL_NS COUNT ADD_NS" (Klipper's queue_step, in ns), every step within
 //   US microseconds of its exact time; the compression ratio (steps / runs) goes to stderr.
-// A bad program writes nothing: the output goes to OUT.partial and is renamed at the end (to
-// stdout, when no -o is given, only after the whole program has been generated).
+// Output streams in bounded memory. With -o a regular file appears only when the whole program
+// ran clean (OUT.partial, renamed at the end); standard output, a pipe or a device receives the
+// steps as they come, so a bad program's output there stops at the error (exit status 2).
 #include <cstdio>
 #include <optional>
 #include <string>
@@ -44,16 +45,16 @@ struct StepsOptions {
     double compress_us = -1;    // < 0: no compression
 };
 
-// Bytes for OUT.partial (flushed as they grow) or for stdout (held to the end).
+// Bytes for the output, flushed as they grow: memory stays bounded however long the program.
 class Output {
 public:
     explicit Output(std::FILE* file) : file_(file) {}
     std::string& buffer() { return buffer_; }
     void maybe_flush() {
-        if (file_ != nullptr && buffer_.size() > (1 << 16)) flush();
+        if (buffer_.size() > (1 << 16)) flush();
     }
     void flush() {
-        if (file_ != nullptr) std::fwrite(buffer_.data(), 1, buffer_.size(), file_);
+        std::fwrite(buffer_.data(), 1, buffer_.size(), file_);
         buffer_.clear();
     }
 
@@ -82,17 +83,15 @@ void flush_axis(std::size_t axis, AxisCompressor& c, std::int64_t max_error_ns, 
 int run_steps(const StepsOptions& options) {
     auto interpreter = open_program_or_report(options.program, options.machine, false);
     if (!interpreter) return exit_bad_input;
+    ProgramProgress progress("steps", options.program, options.machine.quiet);
     const MachineConfig& machine = interpreter->machine();
     Planner planner(machine);
     StepGenerator steps(machine);
 
-    std::optional<PartialFile> file;
-    if (!options.output.empty()) {
-        file = PartialFile::create(options.output);
-        if (!file) return exit_bad_input;
-    }
-    // A bad program writes nothing: returning drops the unfinished output with its PartialFile.
-    Output out(file ? file->get() : nullptr);
+    std::optional<PartialFile> file = PartialFile::create(options.output.empty() ? "-" : options.output);
+    if (!file) return exit_bad_input;
+    // A bad program leaves no -o file: returning drops the unfinished output with its PartialFile.
+    Output out(file->get());
     const bool compress = options.compress_us >= 0;
     const auto max_error_ns = static_cast<std::int64_t>(options.compress_us * 1000.0);
     std::vector<AxisCompressor> compressors(machine.axes.size());
@@ -134,7 +133,10 @@ int run_steps(const StepsOptions& options) {
         steps.add(piece);
         while (steps.pop(event)) write(event);
     };
-    if (!plan_program(*interpreter, planner, on_piece)) return exit_bad_input;
+    if (!plan_program(*interpreter, planner, on_piece, {}, &progress)) {
+        if (file->is_stdout()) out.flush();  // what came before the error, as `moves` prints it
+        return exit_bad_input;
+    }
     steps.finish();
     while (steps.pop(event)) write(event);
     if (compress) {
@@ -142,12 +144,8 @@ int run_steps(const StepsOptions& options) {
             flush_axis(a, compressors[a], max_error_ns, out.buffer(), runs);
         }
     }
-    if (file) {
-        out.flush();
-        if (!file->commit()) return exit_bad_input;
-    } else {
-        std::fwrite(out.buffer().data(), 1, out.buffer().size(), stdout);
-    }
+    out.flush();
+    if (!file->commit()) return exit_bad_input;
     if (compress) {
         fmt::print(stderr, "steps: {} runs: {} compression ratio: {:.2f}\n", events, runs,
                    runs > 0 ? static_cast<double>(events) / static_cast<double>(runs) : 0.0);
@@ -160,12 +158,12 @@ int run_steps(const StepsOptions& options) {
 void add_steps_verb(CLI::App& app, int& exit_status) {
     auto options = std::make_shared<StepsOptions>();
     CLI::App* verb = app.add_subcommand("steps", "Generate the exact step/direction events of a program");
-    verb->add_option("FILE", options->program, "NC program")->required();
+    verb->add_option("FILE", options->program, "NC program ('-': standard input)")->required();
     add_machine_options(*verb, options->machine);
-    verb->add_option("-o,--output", options->output, "output file (default: stdout)");
+    verb->add_option("-o,--output", options->output, "output file; '-': standard output (the default)");
     verb->add_flag("--text", options->text, "one step a line: t_ns axis dir, and the port byte on phase-table axes");
     auto* compress = verb->add_option("--compress", options->compress_text,
-                                      "write queue_step runs with this maximum timing error, us (default 25)")
+                                      "write queue_step runs, every step within US microseconds of its time, US >= 0 (default 25)")
                          ->expected(0, 1);
     verb->callback([options, compress, &exit_status] {
         if (compress->count() > 0) {

@@ -1,6 +1,8 @@
 // nckit: the command line. Each verb lives in its own cmd_*.cpp; this file only dispatches.
 #include <CLI/CLI.hpp>
 
+#include <cstdio>
+
 #include "common.hpp"
 #include "verbs.hpp"
 
@@ -20,6 +22,12 @@ int main(int argc, char** argv) {
     nckit::cli::add_eccentric_verb(app, exit_status);
     nckit::cli::add_piston_verb(app, exit_status);
     nckit::cli::add_pattern_verb(app, exit_status);
+    if (argc > 1 && argv[1][0] != '-') {
+        if (auto hint = nckit::cli::unknown_verb_hint(app, argv[1])) {
+            std::fprintf(stderr, "%s\n", hint->c_str());
+            return nckit::cli::exit_bad_input;
+        }
+    }
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -24,6 +24,7 @@ void MovePump::produce() {
                 break;
             }
         }
+        offset_read_.store(interpreter_.main_program_offset(), std::memory_order_relaxed);
         std::unique_lock lock(mutex_);
         changed_.wait(lock, [&] { return stopping_ || batches_.size() < max_batches_in_flight; });
         if (stopping_) return;

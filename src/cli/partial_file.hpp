@@ -1,34 +1,35 @@
 #pragma once
-// An output file that appears under its name only when complete: it is written as NAME.partial,
-// renamed by commit(), and removed if never committed, so a bad program leaves no output.
+// A command-line output (-o, --trace, --svg, ...) through nckit::OutputFile: "-" is standard
+// output, devices, pipes and sockets are written through, symlinks are followed, and a regular
+// file appears under its name only when complete (NAME.partial, fsync, rename), so a bad program
+// leaves the old file as it was. Errors print `NAME: cannot write: REASON (DETAIL)`.
 #include <cstdio>
 #include <optional>
 #include <string>
 #include <string_view>
 
+#include "nckit/core/output_file.hpp"
+
 namespace nckit::cli {
 
 class PartialFile {
 public:
-    //! Opens NAME.partial; prints `NAME:0:0: error: cannot write` and gives nothing if it cannot.
+    //! Opens the output; prints why and gives nothing if it cannot.
     [[nodiscard]] static std::optional<PartialFile> create(const std::string& name);
 
-    PartialFile(PartialFile&& other) noexcept;
-    PartialFile& operator=(PartialFile&& other) noexcept;
-    PartialFile(const PartialFile&) = delete;
-    ~PartialFile();
+    [[nodiscard]] std::FILE* get() const { return file_.get(); }
+    void write(std::string_view bytes) { file_.write(bytes); }
+    [[nodiscard]] bool is_stdout() const { return file_.kind() == OutputFile::Kind::standard_output; }
 
-    [[nodiscard]] std::FILE* get() const { return file_; }
-    void write(std::string_view bytes) { std::fwrite(bytes.data(), 1, bytes.size(), file_); }
-
-    //! Closes and renames; false (error printed, nothing left behind) when writing failed.
+    //! Completes the output; false (error printed, the original left as it was) when it failed.
     [[nodiscard]] bool commit();
 
 private:
-    PartialFile(std::string name, std::FILE* file) : name_(std::move(name)), file_(file) {}
-    void discard();  //!< close and remove an uncommitted file
-    std::string name_;
-    std::FILE* file_ = nullptr;  // null once committed or moved from
+    explicit PartialFile(OutputFile file) : file_(std::move(file)) {}
+    OutputFile file_;
 };
+
+//! Prints an output error as `NAME: cannot write: REASON (DETAIL)`.
+void print_output_error(const OutputError& error);
 
 }  // namespace nckit::cli

@@ -8,7 +8,7 @@ namespace nckit::cli {
 
 bool plan_program(Interpreter& interpreter, Planner& planner,
                   const std::function<void(const TrajectoryPiece&)>& on_piece,
-                  const std::function<void(const Move&)>& on_move) {
+                  const std::function<void(const Move&)>& on_move, ProgramProgress* progress) {
     TrajectoryPiece piece;
     auto drain = [&] {
         while (planner.pop(piece)) on_piece(piece);
@@ -20,6 +20,7 @@ bool plan_program(Interpreter& interpreter, Planner& planner,
             print_diagnostic(*diagnostic);
             return false;
         }
+        if (progress != nullptr) progress->update(interpreter);
         const Move& move = std::get<Move>(result);
         if (on_move) on_move(move);
         planner.push(move);
@@ -32,6 +33,7 @@ bool plan_program(Interpreter& interpreter, Planner& planner,
     }
     planner.finish();
     drain();
+    if (progress != nullptr) progress->finish();
     return true;
 }
 

@@ -7,6 +7,10 @@
 #include "nckit/plan/planner.hpp"
 
 namespace nckit::cli {
+class ProgramProgress;
+}
+
+namespace nckit::cli {
 
 //! Interprets the whole program into `planner` and calls `on_piece` with every piece in order
 //! (`on_move` first sees each move, when given). A bad program or a move the planner refuses
@@ -14,6 +18,7 @@ namespace nckit::cli {
 //! caller writes its output only after a true.
 [[nodiscard]] bool plan_program(Interpreter& interpreter, Planner& planner,
                                 const std::function<void(const TrajectoryPiece&)>& on_piece,
-                                const std::function<void(const Move&)>& on_move = {});
+                                const std::function<void(const Move&)>& on_move = {},
+                                ProgramProgress* progress = nullptr);
 
 }  // namespace nckit::cli

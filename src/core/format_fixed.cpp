@@ -20,13 +20,13 @@ std::size_t format_fixed4_fast(double value, char* buffer) {
     const double fraction = std::abs(scaled - std::trunc(scaled));
     if (!(std::abs(value) < 1e8) || std::abs(fraction - 0.5) < 1e-3) return 0;
     // Away from a tie, adding a half and truncating rounds exactly (and skips a libm call).
-    auto units = static_cast<long long>(scaled + (scaled < 0 ? -0.5 : 0.5));
+    // The sign is the value's, as fmt prints it: -0.00004 and -0.0 print "-0.0000".
+    const bool negative = std::signbit(value);
+    auto units = static_cast<long long>(std::abs(scaled) + 0.5);
     // Digits are written backwards into a small buffer, then moved to the front.
     char text[24];
     char* end = text + sizeof text;
     char* p = end;
-    bool negative = units < 0;
-    if (negative) units = -units;
     for (int i = 0; i < 4; ++i, units /= 10) *--p = static_cast<char>('0' + units % 10);
     *--p = '.';
     do {

@@ -1,5 +1,7 @@
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <string_view>
 #include <cstdint>
 
 #include <fmt/format.h>
@@ -49,6 +51,12 @@ void read_machine(const toml::table& table, MachineConfig& config, ConfigSink& s
     }
     // Optional: 1 ms is the servo period nearly every controller (LinuxCNC included) runs.
     reader.number_into("servo_period_s", Need::optional, Sign::positive, config.servo_period_s);
+    if (reader.has("servo_period_s") && config.servo_period_s > 0 &&
+        !(config.servo_period_s >= 1e-6 && config.servo_period_s <= 1.0)) {
+        sink.error(reader.region_of("servo_period_s"), "config-value",
+                     fmt::format("'servo_period_s' = {} is implausible: it must lie between 1e-06 and 1 s",
+                                 config.servo_period_s));
+    }
     if (std::optional<bool> diameter = reader.flag("diameter_mode", Need::optional)) {
         config.diameter_mode = *diameter;
     }
@@ -79,13 +87,31 @@ void read_machine(const toml::table& table, MachineConfig& config, ConfigSink& s
 
 // Limits end up as divisors (time = distance / velocity, steps = mm * steps_per_unit), so zero
 // is an error here rather than a silent "unlimited" or a division by zero in the planner.
-void read_limits(TableReader& reader, AxisConfig& axis) {
+void read_limits(TableReader& reader, AxisConfig& axis, ConfigSink& sink) {
     reader.number_into("max_velocity", Need::required, Sign::positive, axis.max_velocity);
     reader.number_into("max_acceleration", Need::required, Sign::positive, axis.max_acceleration);
     reader.number_into("max_jerk", Need::required, Sign::positive, axis.max_jerk);
     reader.number_into("steps_per_unit", Need::required, Sign::positive, axis.steps_per_unit);
     reader.number_into("backlash", Need::optional, Sign::non_negative, axis.backlash);
     reader.number_into("backlash_rate_steps_s", Need::optional, Sign::positive, axis.backlash_rate_steps_s);
+    // Positive is not enough: max_velocity = 1e-308 makes a cycle time of inf s. The bounds are
+    // far outside any machine (1 µm/s to 1 km/s, ...) and keep every figure finite.
+    struct Bound {
+        std::string_view key;
+        double value;
+        double low;
+        double high;
+    };
+    for (const Bound& b : {Bound{"max_velocity", axis.max_velocity, 1e-3, 1e6},
+                           Bound{"max_acceleration", axis.max_acceleration, 1e-3, 1e9},
+                           Bound{"max_jerk", axis.max_jerk, 1e-3, 1e12},
+                           Bound{"steps_per_unit", axis.steps_per_unit, 1e-3, 1e9},
+                           Bound{"backlash", axis.backlash, 0.0, 1e3},
+                           Bound{"backlash_rate_steps_s", axis.backlash_rate_steps_s, 1e-3, 1e9}}) {
+        if (!reader.has(b.key) || (b.value >= b.low && b.value <= b.high) || !(b.value > 0 || b.low == 0)) continue;
+        sink.error(reader.region_of(b.key), "config-value",
+                     fmt::format("'{}' = {} is implausible: it must lie between {} and {}", b.key, b.value, b.low, b.high));
+    }
 }
 
 void read_travel(TableReader& reader, AxisConfig& axis, ConfigSink& sink) {
@@ -93,6 +119,15 @@ void read_travel(TableReader& reader, AxisConfig& axis, ConfigSink& sink) {
     const bool have_max = reader.number_into("max", Need::required, Sign::any, axis.max);
     const bool have_home = reader.number_into("home", Need::optional, Sign::any, axis.home);
     if (!have_min || !have_max) return;
+    constexpr double max_travel = 1e6;  // mm (deg): a kilometre of travel is no machine's
+    for (const char* key : {"min", "max"}) {
+        const double value = std::string_view(key) == "min" ? axis.min : axis.max;
+        if (std::abs(value) > max_travel) {
+            sink.error(reader.region_of(key), "config-value",
+                       fmt::format("'{}' = {} is implausible: travel must lie within +-{}", key, value, max_travel));
+            return;
+        }
+    }
     if (axis.min >= axis.max) {
         sink.error(reader.region_of("max"), "config-value",
                    fmt::format("'max' ({}) must be greater than 'min' ({})", axis.max, axis.min));
@@ -188,7 +223,7 @@ AxisEntry read_axis(const toml::table& table, ConfigSink& sink) {
     if (auto i = reader.choice("kind", Need::required, "kind", {"linear", "rotary"})) {
         entry.config.kind = kinds[*i];
     }
-    read_limits(reader, entry.config);
+    read_limits(reader, entry.config, sink);
     read_travel(reader, entry.config, sink);
     static_assert(phase_table_names.size() == 5, "the phase_table choices below follow the names");
     if (auto i = reader.choice("phase_table", Need::optional, "phase_table",

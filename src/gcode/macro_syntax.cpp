@@ -4,6 +4,7 @@
 #include "nckit/gcode/macro_alarms.hpp"
 
 #include <array>
+#include <cmath>
 #include <utility>
 
 #include <fmt/format.h>
@@ -149,7 +150,9 @@ public:
         if (auto e = number(literal)) return e;
         double n = block_.exprs[literal].value;
         block_.exprs.pop_back();
-        if (n != static_cast<double>(static_cast<std::int64_t>(n))) {
+        // floor, not a cast to an integer: a literal above 2^63 is whole (and alarm 115 later says
+        // it is no variable); casting it would be undefined.
+        if (n != std::floor(n)) {
             return format_error(column, "variable number must be a whole number");
         }
         out = add(ExprNode{ExprOp::variable, ExprFunction::sin, -1, -1, n, column});

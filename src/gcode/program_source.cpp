@@ -1,6 +1,10 @@
 #include "nckit/gcode/program_source.hpp"
 
+#include <cerrno>
 #include <cstring>
+#include <string_view>
+
+#include <unistd.h>
 #include <utility>
 
 #include <fmt/format.h>
@@ -9,10 +13,24 @@ namespace nckit {
 
 namespace {
 constexpr std::size_t buffer_bytes = 1 << 20;
+constexpr std::string_view utf8_bom = "\xEF\xBB\xBF";
 }
 
 Result<ProgramSource> ProgramSource::open(const std::filesystem::path& path) {
     ProgramSource source;
+    if (path == "-") {
+        // Standard input, read as any pipe: streamed once, never searched backwards.
+        source.name_ = std::make_shared<const std::string>("<stdin>");
+        int fd = ::dup(STDIN_FILENO);
+        source.file_ = fd >= 0 ? ::fdopen(fd, "rb") : nullptr;
+        if (source.file_ == nullptr) {
+            if (fd >= 0) ::close(fd);
+            return error_at(make_location(source.name_, 0, 0), "file",
+                            fmt::format("cannot read standard input: {}", std::strerror(errno)));
+        }
+        source.text_.resize(buffer_bytes);
+        return source;
+    }
     source.name_ = std::make_shared<const std::string>(path.string());
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) {
@@ -90,6 +108,8 @@ Result<std::optional<ProgramSource::Line>> ProgramSource::next() {
             }
             begin_ += length + (newline ? 1 : 0);
             if (!text.empty() && text.back() == '\r') text.remove_suffix(1);
+            // A UTF-8 byte-order mark (editors on Windows write one) is not part of the program.
+            if (line_offset == 0 && text.starts_with(utf8_bom)) text.remove_prefix(utf8_bom.size());
             ++line_number_;
             return std::optional<Line>(Line{text, line_number_, line_offset});
         }

@@ -217,6 +217,17 @@ std::optional<Diagnostic> Executor::dwell(std::vector<Move>& out) {
                          machine_.decimal_point_input == DecimalPointInput::least_increment);
     if (milliseconds) seconds /= 1000.0;
     if (seconds < 0) return error(time->column, "bad-value", "dwell time is negative");
+    if (time->letter == 'P' && time->has_decimal_point && time->value != std::floor(time->value) &&
+        options_.on_warning) {
+        // A Fanuc control reads P as a whole count of milliseconds: P1.5 is most likely meant as
+        // 1.5 seconds (LinuxCNC's reading), which is X1.5 or P1500.
+        Diagnostic warning = error(time->column, "dwell-decimal",
+                                   fmt::format("G4 P{}: P counts milliseconds, so this dwells {} ms; for {} s "
+                                               "write X{} or P{}", time->value, time->value, time->value,
+                                               time->value, time->value * 1000.0));
+        warning.severity = Severity::warning;
+        options_.on_warning(warning);
+    }
     push(out, Dwell{seconds});
     return std::nullopt;
 }

@@ -33,6 +33,7 @@ Interpreter::~Interpreter() = default;
 const MachineConfig& Interpreter::machine() const { return state_->machine; }
 
 ModalView Interpreter::modal_view() const { return state_->runner.modal_view(); }
+std::uint64_t Interpreter::main_program_offset() const { return state_->runner.main_program_offset(); }
 
 InterpResult Interpreter::next() {
     State& s = *state_;
@@ -41,7 +42,14 @@ InterpResult Interpreter::next() {
         s.pending.clear();
         s.next_pending = 0;
         // The moves of the block that ended the program still go out before the end.
-        if (auto stop = s.runner.fill(s.pending)) s.finish(std::move(*stop));
+        if (auto stop = s.runner.fill(s.pending)) {
+            if (s.options.keep_going_after_errors && s.runner.error_is_recoverable() &&
+                std::holds_alternative<Diagnostic>(*stop)) {
+                s.pending.clear();  // the block in error moves nothing
+                return std::move(*stop);
+            }
+            s.finish(std::move(*stop));
+        }
     }
     return std::move(s.pending[s.next_pending++]);
 }

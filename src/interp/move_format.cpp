@@ -17,6 +17,9 @@ template <class... Ts>
 struct overloaded : Ts... {
     using Ts::operator()...;
 };
+// clang 14 (the fuzz build) does not deduce an aggregate's template arguments by itself.
+template <class... Ts>
+overloaded(Ts...) -> overloaded<Ts...>;
 
 //! -0.0000 reads as a different number to a person; print it as 0.
 double no_negative_zero(double value, double resolution) {

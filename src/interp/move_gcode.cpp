@@ -85,7 +85,11 @@ void GcodeWriter::append_axes(std::string& out, const AxisVector& position) cons
         auto axis = static_cast<Axis>(i);
         if (machine_.find(axis) == nullptr) continue;
         const char name[1] = {letter(axis)};
-        word(out, std::string_view(name, 1), position[axis]);
+        if (precise_positions_) {
+            precise_word(out, std::string_view(name, 1), position[axis]);
+        } else {
+            word(out, std::string_view(name, 1), position[axis]);
+        }
     }
 }
 

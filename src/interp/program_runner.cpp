@@ -11,6 +11,11 @@
 namespace nckit::interp {
 
 namespace {
+//! O and N numbers have at most 8 digits (as the library and GOTO searches read them).
+constexpr double max_label_number = 99999999;
+}  // namespace
+
+namespace {
 
 constexpr std::size_t max_call_depth = 10;  // subprogram levels, macros included
 constexpr double seconds_per_hour = 3600.0;
@@ -96,6 +101,7 @@ const Block* ProgramRunner::remember(const Block& block) {
 
 std::optional<InterpResult> ProgramRunner::fill(std::vector<Move>& pending) {
     if (startup_error_) return InterpResult(*startup_error_);
+    error_is_recoverable_ = false;
     while (pending.empty()) {
         // Blocks run again (loops, jumps back, calls) come parsed from the cache.
         const Block* block = repeating() ? cached_block() : nullptr;
@@ -116,7 +122,10 @@ std::optional<InterpResult> ProgramRunner::fill(std::vector<Move>& pending) {
             }
             block_.location = make_location(source().file(), text.number, 1);
             line_offset_ = text.offset;
-            if (auto error = parse_block(text.text, block_)) return InterpResult(std::move(*error));
+            if (auto error = parse_block(text.text, block_)) {
+                error_is_recoverable_ = !in_call;  // the reader stands at the next line
+                return InterpResult(std::move(*error));
+            }
             if (block_.tape_mark) {
                 if (in_call) {
                     // A library file may open with '%', as a punched tape does: it comes before the program.
@@ -136,13 +145,26 @@ std::optional<InterpResult> ProgramRunner::fill(std::vector<Move>& pending) {
         }
         seen_block_ = true;
         current_block_ = block;
-        if (auto result = run_block(*block, pending)) return result;
+        if (auto result = run_block(*block, pending)) {
+            const auto* error = std::get_if<Diagnostic>(&*result);
+            error_is_recoverable_ = error != nullptr && frames_.size() == 1 && error->alarm != alarm::too_many_blocks;
+            return result;
+        }
     }
     return std::nullopt;
 }
 
 std::optional<InterpResult> ProgramRunner::run_block(const Block& block, std::vector<Move>& pending) {
     Frame& current = frame();
+    if (!block.words.empty() && (block.words.front().letter == 'O' || block.words.front().letter == 'N')) {
+        // Checked before any cast to an integer: O and N numbers have at most 8 digits.
+        const Word& first = block.words.front();
+        if (!(first.value >= 0 && first.value <= max_label_number) || first.value != std::floor(first.value)) {
+            return InterpResult(alarm_at(block, first.column, alarm::format,
+                                         fmt::format("{} number {} is not a whole number 0-{}", first.letter,
+                                                     first.value, max_label_number)));
+        }
+    }
     if (!block.words.empty() && block.words.front().letter == 'O') {
         // A program's own O line is its header; reaching the next program's ends this one.
         if (!current.started) {

@@ -46,6 +46,10 @@ public:
 
     //! Writes #500-#999 back when the program changed them and a file is configured.
     [[nodiscard]] std::optional<Diagnostic> save_retained() const;
+    //! The error fill() last returned was in a block of the main program and the run can go on
+    //! with the next block (see InterpreterOptions::keep_going_after_errors).
+    [[nodiscard]] bool error_is_recoverable() const { return error_is_recoverable_; }
+    [[nodiscard]] std::uint64_t main_program_offset() const { return sources_.empty() ? 0 : sources_[0].next_offset(); }
 
     [[nodiscard]] ModalView modal_view() const { return executor_.modal_view(); }
 
@@ -128,6 +132,7 @@ private:
     double timer_hours_base_s_ = 0;   // #3002
     bool seen_tape_mark_ = false;
     bool seen_block_ = false;
+    bool error_is_recoverable_ = false;
 };
 
 }  // namespace nckit::interp

@@ -92,7 +92,16 @@ std::optional<Diagnostic> ProgramRunner::call(const Block& block, std::uint32_t 
     auto found = library_.find(program, sources_[0]);
     if (!found) return found.diagnostics().front();
     if (!found.value()) {
-        return alarm_at(block, column, alarm::program_not_found, fmt::format("program O{:04d} not found", program));
+        // Say where it looked: the usual cause is a library folder not given or the wrong one.
+        const std::string where =
+            options_.library_dir.empty()
+                ? fmt::format("looked in {}; no --library folder given (give one with --library DIR: files "
+                              "O{:04d}.nc, {:04d}.ngc or O{:04d})",
+                              *sources_[0].file(), program, program, program)
+                : fmt::format("looked in {} and in the library folder {} (files O{:04d}.nc, {:04d}.ngc, O{:04d})",
+                              *sources_[0].file(), options_.library_dir.string(), program, program, program);
+        return alarm_at(block, column, alarm::program_not_found,
+                        fmt::format("program O{:04d} not found: {}", program, where));
     }
     const ProgramLocation& location = **found;
     const std::size_t depth = frames_.size();

@@ -153,11 +153,18 @@ std::optional<Diagnostic> ProgramRunner::jump_to_sequence(const Block& block, st
     const std::uint32_t here_line = src.next_line_number();
     // Forward from here to the end of this program, then from its start back to here.
     std::vector<int> ends_passed;
+    bool budget_spent = false;
     auto search = [&](bool forward) -> std::optional<std::pair<std::uint64_t, std::uint32_t>> {
         for (;;) {
             auto line = src.next();
             if (!line || !line.value()) return std::nullopt;
             const ProgramSource::Line& text = **line;
+            // Every line searched counts against the runaway budget, as a block run does: two
+            // GOTOs jumping over each other across a long program are bounded in time too.
+            if (++counted_blocks_ > options_.max_blocks) {
+                budget_spent = true;
+                return std::nullopt;
+            }
             // Backward, everything before here is this program (its O line is its header);
             // forward, the next O line starts another program.
             if (!forward && text.offset >= here) return std::nullopt;
@@ -185,6 +192,14 @@ std::optional<Diagnostic> ProgramRunner::jump_to_sequence(const Block& block, st
         src.seek(target->first, target->second);
         return std::nullopt;
     }
+    auto runaway = [&] {
+        src.seek(here, here_line);
+        return alarm_at(block, column, alarm::too_many_blocks,
+                        fmt::format("more than {} blocks run or searched in loops, jumps and calls: a runaway "
+                                    "program? (raise the budget with --max-blocks)",
+                                    options_.max_blocks));
+    };
+    if (budget_spent) return runaway();
     src.seek(f.program.offset, f.program.line);
     if (auto target = search(false)) {
         // Jumping back before a loop's DO leaves that loop.
@@ -193,6 +208,7 @@ std::optional<Diagnostic> ProgramRunner::jump_to_sequence(const Block& block, st
         src.seek(target->first, target->second);
         return std::nullopt;
     }
+    if (budget_spent) return runaway();
     src.seek(here, here_line);
     return alarm_at(block, column, alarm::sequence_not_found, fmt::format("sequence number N{} not found", number));
 }

@@ -60,6 +60,12 @@ void read_eccentric(const toml::table& table, EccentricJob& job, ConfigSink& sin
         sink.error(reader.region_of("model_error"), "config-value",
                    fmt::format("'model_error' must lie between -0.5 and 0.5, not {}", job.model_error));
     }
+    if (reader.has("updates_per_turn") && job.updates_per_turn < 3) {
+        // The section's circle fit needs three points a turn; fewer would report a perfect circle.
+        sink.error(reader.region_of("updates_per_turn"), "config-value",
+                   fmt::format("'updates_per_turn' = {} is too few: a section needs at least 3 points a turn",
+                               job.updates_per_turn));
+    }
     if (job.updates_per_turn > 1000000) {
         sink.error(reader.region_of("updates_per_turn"), "config-value",
                    fmt::format("'updates_per_turn' = {} is more than any encoder gives", job.updates_per_turn));

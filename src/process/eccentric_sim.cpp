@@ -154,6 +154,12 @@ Result<EccentricReport> simulate_eccentric(const EccentricJob& job, const Machin
                                     report.peak_jerk_mm_s3, x->max_velocity, x->max_acceleration, x->max_jerk,
                                     kinematic));
     }
+    if (job.rpm > report.limits.following) {
+        return error_at(job.rpm_at, "eccentric-too-fast",
+                        fmt::format("at {} rpm the X servo does not follow the cam within {} um: the highest "
+                                    "speed within {} um is {:.4g} rpm",
+                                    job.rpm, following_limit_um, following_limit_um, report.limits.following));
+    }
     report.compensated = simulate_section(job, machine, job.rpm, true);
     report.uncompensated = simulate_section(job, machine, job.rpm, false);
     return report;

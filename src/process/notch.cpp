@@ -20,11 +20,14 @@ Result<NotchJob> notch_program(const std::vector<Move>& moves, const MachineConf
     // original text with blocks changed: shortening an approach or inserting moves in a
     // program with incremental moves, macros or calls would shift everything after it.
     GcodeWriter writer(machine);
+    // Run-up and overrun points lie on the cut line in the cut's direction; four decimals would
+    // round them off it, and the planner would blend the bend below feed.
+    writer.write_precise_positions(true);
     writer.append_header(job.program, source_name);
     for (const Move& move : rewrite->moves) writer.append(job.program, move);
     writer.append_footer(job.program);
 
-    // "After" is measured on the program as written (4 decimals), read back like any program.
+    // "After" is measured on the program as written, read back like any program.
     std::vector<Move> reread;
     Interpreter interpreter(machine, ProgramSource::from_string(job.program, source_name + " (notched)"));
     for (;;) {

@@ -220,7 +220,9 @@ TEST(MacroCalls, ProgramNotFoundIsAlarm78) {
     EXPECT_EQ(alarm_of("G1 X1 F100\nM98 P4321\n"), "78 2:1");
     EXPECT_EQ(alarm_of("G65 P4321 A1\n"), "78 1:1");
     Diagnostic d = error_of("M98 P12\n", wide_mill());
-    EXPECT_EQ(d.message, "program O0012 not found");
+    // It says where it looked and how to give a library folder.
+    EXPECT_EQ(d.message.rfind("program O0012 not found: looked in ", 0), 0U) << d.message;
+    EXPECT_NE(d.message.find("--library"), std::string::npos) << d.message;
 }
 
 TEST(MacroCalls, SeveralProgramsInOneFile) {

@@ -44,4 +44,21 @@ with tempfile.TemporaryDirectory() as tmp:
     assert r.returncode == 2, r.returncode
     assert re.search(r"bad\.toml:7:7: error: at 400 rpm the X axis would need .* up to 115 rpm", r.stderr), r.stderr
     assert not os.path.exists(os.path.join(tmp, "never.csv"))
+
+    # Fuzz findings: fewer than 3 updates a turn cannot fit a circle (it reported an offset of
+    # 1.8e20 um and roundness 0); a speed above the highest within 1 um is an error, not exit 0.
+    with open(job) as f:
+        good = f.read()
+    few = os.path.join(tmp, "few.toml")
+    with open(few, "w") as f:
+        f.write(good.replace("rpm = 60\n", "rpm = 60\nupdates_per_turn = 2\n"))
+    r = run("eccentric", few, "--machine", lathe)
+    assert r.returncode == 2 and "at least 3 points a turn" in r.stderr, (r.returncode, r.stderr)
+    following_limit = report["max_rpm_by"]["following"]
+    if following_limit is not None and following_limit < report["max_rpm_by"]["acceleration"]:
+        fast = os.path.join(tmp, "fast.toml")
+        with open(fast, "w") as f:
+            f.write(good.replace("rpm = 60\n", f"rpm = {following_limit * 1.05:.3f}\n"))
+        r = run("eccentric", fast, "--machine", lathe)
+        assert r.returncode == 2 and "within 1 um" in r.stderr, (r.returncode, r.stderr)
 print("ok")

@@ -105,7 +105,7 @@ with tempfile.TemporaryDirectory() as tmp:
         cam, trace, svg = (os.path.join(tmp, f"{name}.{ext}") for ext in ("cam.csv", "trace.csv", "svg"))
         turns = 2 if name == "piston.toml" else 3
         extra = ["--trace-turns", str(turns)] if turns != 3 else []  # 3 is the default
-        r = run(job, "--json", "--svg", svg, "--cam-table", cam, "--trace", trace, *extra)
+        r = run(job, "--json", "--svg-dir", svg, "--cam-table", cam, "--trace", trace, *extra)
         assert r.returncode == 0, r.stderr
         report = json.loads(r.stdout)
         check_json(report)
@@ -178,7 +178,7 @@ with tempfile.TemporaryDirectory() as tmp:
         with open(bad, "w") as f:
             f.write(content)
         out = os.path.join(tmp, "never")
-        r = run(bad, "--json", "--svg", out + "_svg", "--cam-table", out + ".csv", "--trace", out + "_trace.csv")
+        r = run(bad, "--json", "--svg-dir", out + "_svg", "--cam-table", out + ".csv", "--trace", out + "_trace.csv")
         assert r.returncode == 2, (name, r.returncode, r.stdout)
         assert re.search(message, r.stderr), (name, r.stderr)
         assert r.stdout == "", r.stdout

@@ -5,7 +5,8 @@
 namespace nckit {
 
 //! Appends `value` with exactly 4 decimals, as `{:.4f}` prints it (the exact binary value
-//! rounded), fast: long programs print millions of these.
+//! rounded, and a negative value that rounds to zero as "-0.0000", as fmt does), fast: long
+//! programs print millions of these. Callers that want no "-0.0000" clear the sign first.
 void append_fixed4(std::string& out, double value);
 
 inline constexpr std::size_t max_fast_fixed4_chars = 24;

@@ -1,6 +1,7 @@
 #pragma once
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <variant>
 
@@ -29,6 +30,14 @@ struct InterpreterOptions {
     std::filesystem::path retained_file;
     //! Write changed #500-#999 back at the end of the run (a check reads them but keeps none).
     bool save_retained = true;
+    //! After an error in a block of the main program (a syntax error, a bad word, a move off the
+    //! travel), report it and go on with the next block instead of stopping, as a compiler does
+    //! (`nckit check`). Errors that leave no sensible place to go on (a runaway, an unreadable
+    //! line, an error inside a called program) still stop the run.
+    bool keep_going_after_errors = false;
+    //! Called with each warning (a block that runs but likely not as meant, e.g. `G4 P1.5`);
+    //! none: warnings are dropped.
+    std::function<void(const Diagnostic&)> on_warning;
 };
 
 //! The program ended: M2, M30, a closing '%', or the end of the file.
@@ -38,7 +47,8 @@ struct ProgramEnd {};
 using InterpResult = std::variant<Move, ProgramEnd, Diagnostic>;
 
 //! Runs a program block by block and streams its moves: memory stays bounded whatever the
-//! program's length. After an error or the end, every further call repeats that answer.
+//! program's length. After an error or the end, every further call repeats that answer (unless
+//! `keep_going_after_errors` lets it go on after a block's error).
 class Interpreter {
 public:
     Interpreter(MachineConfig machine, ProgramSource source, InterpreterOptions options = {});
@@ -49,6 +59,8 @@ public:
     [[nodiscard]] InterpResult next();
 
     [[nodiscard]] const MachineConfig& machine() const;
+    //! Bytes of the main program read so far (for progress: this over the file's size).
+    [[nodiscard]] std::uint64_t main_program_offset() const;
 
     //! Units, work offsets and modes in force for the moves next() returns now: those of the
     //! block that made them (a block's moves come out together, after its modes are set).

@@ -1,18 +1,14 @@
 #include "retained_store.hpp"
 
-#include <atomic>
-#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <fstream>
 #include <string>
 
-#include <fcntl.h>
-#include <unistd.h>
-
 #include <fmt/format.h>
+
+#include "nckit/core/output_file.hpp"
 
 namespace nckit::interp {
 
@@ -63,38 +59,15 @@ Result<RetainedValues> load_retained(const std::filesystem::path& path) {
 }
 
 std::optional<Diagnostic> save_retained(const std::filesystem::path& path, const RetainedValues& values) {
-    auto fail = [&](const char* what) {
-        return std::optional<Diagnostic>(error_at(make_location(std::make_shared<const std::string>(path.string()), 0, 0),
-                                                  "retained-file", fmt::format("{}: {}", what, std::strerror(errno))));
-    };
     std::string text = "; nckit retained macro variables #500-#999 (vacant ones are left out)\n";
     for (std::size_t i = 0; i < values.size(); ++i) {
         if (!values[i].vacant) text += fmt::format("#{} = {}\n", first_retained + static_cast<int>(i), values[i].number);
     }
-    // Unique per process and per call: two interpreters of one process may finish together.
-    static std::atomic<unsigned> saves{0};
-    std::filesystem::path temporary = path;
-    temporary += fmt::format(".tmp{}.{}", ::getpid(), saves++);
-    int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    if (fd < 0) return fail("cannot write retained variables");
-    std::size_t written = 0;
-    while (written < text.size()) {
-        ssize_t n = ::write(fd, text.data() + written, text.size() - written);
-        if (n < 0) {
-            ::close(fd);
-            ::unlink(temporary.c_str());
-            return fail("cannot write retained variables");
-        }
-        written += static_cast<std::size_t>(n);
-    }
-    // Data on disk before the rename makes it visible: a crash leaves the old or the new file.
-    if (::fsync(fd) != 0 || ::close(fd) != 0) {
-        ::unlink(temporary.c_str());
-        return fail("cannot write retained variables");
-    }
-    if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-        ::unlink(temporary.c_str());
-        return fail("cannot replace retained variables file");
+    // Written as FILE.partial, fsync'd and renamed: a crash leaves the old or the new file.
+    if (auto error = write_file_atomically(path, text)) {
+        return error_at(make_location(std::make_shared<const std::string>(path.string()), 0, 0), "retained-file",
+                        fmt::format("cannot write retained variables: {}{}", error->reason,
+                                    error->detail.empty() ? std::string{} : " (" + error->detail + ")"));
     }
     return std::nullopt;
 }
