@@ -4,7 +4,7 @@ NCKIT      := $(BUILD)/src/nckit
 DEMO       := examples/01_mill_pocket.ngc
 JOBS       ?= 2
 
-.PHONY: all deps configure build run test test-unit test-asan bench clean hal hal-install
+.PHONY: all deps configure build run test test-unit test-asan bench fuzz clean hal hal-install
 
 all: build
 
@@ -55,6 +55,10 @@ hal: configure
 
 hal-install: configure
 	@cmake --build --preset release -j $(JOBS) --target hal-install
+
+# Differential fuzzing against LinuxCNC's rs274: 500 seeded random programs (CTest runs 20).
+fuzz: build
+	@flock /tmp/linuxcnc.lock python3 tests/programs/fuzz_linuxcnc.py --count 500 --seed 11
 
 clean:
 	@rm -rf build

@@ -20,6 +20,8 @@ void read_radius(TableReader& reader, std::string_view radius_key, std::string_v
     if (reader.has(radius_key) && reader.has(diameter_key)) {
         sink.error(reader.region_of(diameter_key), "config-value",
                    fmt::format("give '{}' or '{}', not both", radius_key, diameter_key));
+        (void)reader.node(radius_key, Need::optional);  // both are known keys: no second error
+        (void)reader.node(diameter_key, Need::optional);
         return;
     }
     if (reader.has(diameter_key)) {

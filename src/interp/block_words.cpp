@@ -14,15 +14,6 @@ std::string g_name(GCode code) {
     return code % 10 == 0 ? fmt::format("G{}", code / 10) : fmt::format("G{}.{}", code / 10, code % 10);
 }
 
-MGroup m_group_of(int code) {
-    switch (code) {
-        case 0: case 1: case 2: case 30: case 60: return MGroup::stopping;
-        case 6: return MGroup::tool_change;
-        case 3: case 4: case 5: return MGroup::spindle;
-        case 7: case 8: case 9: return MGroup::coolant;
-        default: return MGroup::other;
-    }
-}
 
 //! M7 and M8 may run together (mist and flood); any other pair of one group conflicts.
 bool m_conflict(int a, int b) {
@@ -34,6 +25,16 @@ bool m_conflict(int a, int b) {
 }
 
 }  // namespace
+
+MGroup m_group_of(int code) {
+    switch (code) {
+        case 0: case 1: case 2: case 30: case 60: return MGroup::stopping;
+        case 6: return MGroup::tool_change;
+        case 3: case 4: case 5: return MGroup::spindle;
+        case 7: case 8: case 9: return MGroup::coolant;
+        default: return MGroup::other;
+    }
+}
 
 std::optional<ModalGroup> group_of(GCode code) {
     switch (code) {

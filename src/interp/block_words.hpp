@@ -69,6 +69,8 @@ struct BlockWords {
     return code == g(73) || code == g(74) || code == g(76) || (code >= g(81) && code <= g(89) && code % 10 == 0);
 }
 
+[[nodiscard]] MGroup m_group_of(int code);
+
 //! The modal group of a G code nckit knows, or nothing for an unknown code.
 [[nodiscard]] std::optional<ModalGroup> group_of(GCode code);
 

@@ -115,6 +115,9 @@ std::optional<Diagnostic> Executor::run(const Block& block, std::vector<Move>& o
 std::optional<Diagnostic> Executor::set_modes() {
     auto code = [&](ModalGroup group) { return words_.group(group); };
     if (GCode c = code(ModalGroup::diameter); c >= 0) modal_.diameter_mode = c == g(7);
+    // F is read before the units change (RS-274/NGC's order, as LinuxCNC): `G20 F10` is 10 of
+    // the units in force before the block.
+    feed_length_factor_mm_ = modal_.length_factor_mm;
     if (GCode c = code(ModalGroup::units); c >= 0) modal_.length_factor_mm = c == g(20) ? mm_per_inch : 1.0;
     if (auto e = set_tool_length()) return e;
     if (GCode c = code(ModalGroup::return_mode); c >= 0) modal_.cycle.return_to_initial = c == g(98);
@@ -152,7 +155,7 @@ std::optional<Diagnostic> Executor::set_modes() {
 
 std::optional<Diagnostic> Executor::set_feed_and_spindle(std::vector<Move>& out) {
     if (const Word* f = words_.word('F'); f != nullptr && !(motion_ == g(32) || motion_ == g(33))) {
-        modal_.feed = f->value * modal_.length_factor_mm;
+        modal_.feed = f->value * feed_length_factor_mm_;
         modal_.feed_set = true;
     }
     SpindleState& spindle = modal_.spindle;
@@ -195,8 +198,17 @@ std::optional<Diagnostic> Executor::set_feed_and_spindle(std::vector<Move>& out)
 }
 
 std::optional<Diagnostic> Executor::emit_mcodes(std::vector<Move>& out, bool stopping) {
-    for (std::size_t i = 0; i < words_.mcode_count; ++i) {
-        int code = words_.mcodes[i].code;
+    // RS-274/NGC's order whatever the order written (`M8 M3` starts the spindle first): tool
+    // change, spindle, coolant, the other codes; the stops after the motion.
+    std::array<std::size_t, 5> order{};
+    std::size_t count = 0;
+    for (MGroup group : {MGroup::tool_change, MGroup::spindle, MGroup::coolant, MGroup::other, MGroup::stopping}) {
+        for (std::size_t i = 0; i < words_.mcode_count; ++i) {
+            if (m_group_of(words_.mcodes[i].code) == group) order[count++] = i;
+        }
+    }
+    for (std::size_t k = 0; k < count; ++k) {
+        int code = words_.mcodes[order[k]].code;
         bool is_stop = code == 0 || code == 1 || code == 2 || code == 30 || code == 60;
         if (is_stop != stopping) continue;
         Io io{IoKind::mcode, code, 0};

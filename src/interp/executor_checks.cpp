@@ -154,7 +154,7 @@ std::optional<Diagnostic> Executor::check_words() {
     if (tool_table_write) {
         const double l = words_.word('L')->value;
         if (l != 1 && l != 10 && l != 11 && l != 12 && l != 13) {
-            return error(words_.word('L')->column, "bad-g10", "G10 needs L1, L2, L10-L13 or L20");
+            return error(words_.group_column(ModalGroup::non_modal), "bad-g10", "G10 needs L1, L2, L10-L13 or L20");
         }
         if (auto e = check_tool_table_write()) return e;
     } else if (non_modal == g(10)) {

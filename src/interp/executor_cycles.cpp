@@ -5,7 +5,7 @@
 // the initial level (where the axis stood when the cycle mode began), the R level and the
 // bottom (the Z word). G98 returns to the initial level (or R when R lies above it), G99 to R.
 // Under G91, R counts from the initial level and Z from R. The sequence of each hole follows
-// LinuxCNC's, so `rs274` gives the same moves: rise to R when below it, then per hole a rapid
+// LinuxCNC's, so `rs274` gives the same moves: rise to the return level when below it, then per hole a rapid
 // in the plane, a rapid down to R, the cycle's own moves, the return.
 #include <algorithm>
 #include <cmath>
@@ -135,10 +135,10 @@ std::optional<Diagnostic> Executor::drill(std::vector<Move>& out) {
     if (back_boring) hole.clear_mm = cycle.initial_z_mm;
     if (hole.repeats == 0) return std::nullopt;  // K0: the words are kept, nothing is drilled
 
-    // Below R: rise to it first, where the tool stands.
-    if (!back_boring && position_[d] < hole.r_mm) {
+    // Below the return level: rise to it first, where the tool stands.
+    if (!back_boring && position_[d] < hole.clear_mm) {
         AxisVector up = position_;
-        up[d] = hole.r_mm;
+        up[d] = hole.clear_mm;
         if (auto e = straight(g(0), up, out)) return e;
     }
     for (int i = 0; i < hole.repeats; ++i) {

@@ -92,7 +92,7 @@ std::optional<Diagnostic> Executor::move(std::vector<Move>& out) {
     if (non_modal == g(28) || non_modal == g(30)) return home(out);
     // G92.1 takes no axis words: check_words() gave any to the motion mode, so they move.
     if (non_modal == g(4) || non_modal == g(10) || non_modal == g(52) || non_modal == g(92) ||
-        non_modal == g(50) || motion_ == g(80)) {
+        non_modal == g(50) || motion_ == g(80) || words_.group(ModalGroup::length_comp) == g(43, 1)) {
         return std::nullopt;
     }
     if (is_drilling_cycle(motion_)) {
@@ -180,7 +180,7 @@ std::optional<Diagnostic> Executor::arc(GCode motion, const AxisVector& target, 
         double half = chord / 2.0;
         double radius = std::abs(r);
         if (radius < half) {
-            if (half - radius > options_.arc_radius_tolerance_mm) {
+            if (half - radius > options_.r_arc_tolerance_mm) {
                 return error(r_word->column, "bad-arc",
                              fmt::format("radius {:.4f} mm is too small to reach the end point "
                                          "({:.4f} mm away)", radius, chord));
@@ -214,7 +214,10 @@ std::optional<Diagnostic> Executor::arc(GCode motion, const AxisVector& target, 
         double r1 = arc_end_radius(arc);
         if (r0 < full_circle_mm) return error(motion_column(), "bad-arc", "arc has zero radius");
         double mismatch = std::abs(r1 - r0);
-        if (mismatch > options_.arc_radius_tolerance_mm && mismatch > radius_relative_tolerance * r0) {
+        // LinuxCNC's inch tolerance is ten times its metric one in its own unit: 2.54 times in mm.
+        const double tolerance = options_.arc_radius_tolerance_mm * (modal_.length_factor_mm != 1.0 ? 2.54 : 1.0);
+        const double relative = mismatch / std::max(r0, r1);
+        if (mismatch > 100.0 * tolerance || (mismatch > tolerance && relative > radius_relative_tolerance)) {
             return error(motion_column(), "bad-arc",
                          fmt::format("end point is not on the arc: radius {:.4f} mm at the start, "
                                      "{:.4f} mm at the end", r0, r1));

@@ -68,10 +68,10 @@ TEST(DrillCycles, MalformedCyclesAreLocated) {
     EXPECT_EQ(error_where("G0 Z5\nG81 X1 Z-1 F60\n"), "missing-word 2:1");   // no R
     EXPECT_EQ(error_where("G0 Z5\nG81 X1 R1 F60\n"), "missing-word 2:1");    // no Z
     EXPECT_EQ(error_where("G0 Z5\nG83 X1 Z-1 R1 F60\n"), "bad-value 2:1");   // no Q
-    EXPECT_EQ(error_where("G0 Z5\nG81 X1 Z-1 R1 F60 K2.5\n"), "bad-value 2:21");
-    EXPECT_EQ(error_where("G0 Z5\nG81 X1 Z3 R1 F60\n"), "bad-cycle 2:12");   // R below the bottom
+    EXPECT_EQ(error_where("G0 Z5\nG81 X1 Z-1 R1 F60 K2.5\n"), "bad-value 2:19");
+    EXPECT_EQ(error_where("G0 Z5\nG81 X1 Z3 R1 F60\n"), "bad-cycle 2:11");   // R below the bottom
     EXPECT_EQ(error_where("G0 Z5\nG81 X1 Z-1 R1\n"), "no-feed 2:1");
-    EXPECT_EQ(error_where("G0 Z5\nG83 X1 Z-100 R1 Q0.0001 F60\n"), "bad-value 2:19");
+    EXPECT_EQ(error_where("G0 Z5\nG83 X1 Z-100 R1 Q0.0001 F60\n"), "bad-value 2:17");
 }
 
 }  // namespace
@@ -103,6 +103,29 @@ TEST(ModalRules, ColonProgramNumbersAndLabelledTapeMarks) {
 
 TEST(ModalRules, WhIsWhile) {
     EXPECT_EQ(texts("#1=0\nWH [#1 LT 2] DO1\n#1=#1+1\nG0 X#1\nEND1\n").size(), 2u);
+}
+
+}  // namespace
+}  // namespace nckit::test
+
+namespace nckit::test {
+namespace {
+
+TEST(RunawayMain, M99LoopWithoutOutputStopsAtOnce) {
+    Diagnostic d = error_of("#1 = 1\nM99\n");
+    EXPECT_EQ(where(d), " 2:1");
+    EXPECT_EQ(d.alarm, 100);
+    // A pass that moves is a real loop: the block budget stops it.
+    InterpreterOptions small;
+    small.max_blocks = 50;
+    RunResult r = run_program("G91 G0 X0.001\nM99\n", default_mill(), small);
+    ASSERT_TRUE(r.error);
+    EXPECT_GT(r.moves.size(), 10u);
+}
+
+TEST(BlockOrder, SpindleBeforeCoolantAndFeedInTheOldUnits) {
+    EXPECT_EQ(texts("M8 M3 S100\n"), (Texts{"S100", "M3", "M8"}));
+    EXPECT_EQ(texts("G20 F10 G1 X1\n"), (Texts{"G1 X25.4000 Y0.0000 Z0.0000 F10.0000"}));
 }
 
 }  // namespace

@@ -52,7 +52,7 @@ TEST(ToolLength, InchProgramsConvertTheWordsNotTheTable) {
 
 TEST(ToolLength, WorkPositionIgnoresTheOffset) {
     EXPECT_EQ(texts("G43 H2 G0 Z5\n#100 = #5003\n#101 = #5083\nG49 G0 X#100 Y#101\n", mill_with_tools()),
-              (Texts{"G0 X0.0000 Y0.0000 Z55.0000", "G0 X5.0000 Y50.0000 Z5.0000"}));
+              (Texts{"G0 X0.0000 Y0.0000 Z55.0000", "G0 X5.0000 Y50.0000 Z55.0000"}));
 }
 
 TEST(ToolLength, HWithoutEntryIsAnError) {
@@ -82,8 +82,8 @@ TEST(ToolTableWrites, G10L10ToL13SetLengthsAndRadii) {
     std::string program =
         "G10 L10 P3 R20\nG10 L11 P3 R-0.5\nG10 L12 P3 R4\nG10 L13 P3 R0.1\n"
         "G43 H3 G0 Z0\n#100 = #2003\n#101 = #2203\n#102 = #2403\n#103 = #2603\nG49 G0 X#100 Y#101\nX#102 Y#103\n";
-    EXPECT_EQ(texts(program), (Texts{"G0 X0.0000 Y0.0000 Z19.5000", "G0 X-0.5000 Y20.0000 Z0.0000",
-                                     "G0 X0.1000 Y4.0000 Z0.0000"}));
+    EXPECT_EQ(texts(program), (Texts{"G0 X0.0000 Y0.0000 Z19.5000", "G0 X-0.5000 Y20.0000 Z19.5000",
+                                     "G0 X0.1000 Y4.0000 Z19.5000"}));
 }
 
 TEST(ToolTableWrites, G91AddsAndLinuxcncFormSetsZ) {
