@@ -115,9 +115,6 @@ std::optional<Diagnostic> Executor::run(const Block& block, std::vector<Move>& o
 std::optional<Diagnostic> Executor::set_modes() {
     auto code = [&](ModalGroup group) { return words_.group(group); };
     if (GCode c = code(ModalGroup::diameter); c >= 0) modal_.diameter_mode = c == g(7);
-    // F is read before the units change (RS-274/NGC's order, as LinuxCNC): `G20 F10` is 10 of
-    // the units in force before the block.
-    feed_length_factor_mm_ = modal_.length_factor_mm;
     if (GCode c = code(ModalGroup::units); c >= 0) modal_.length_factor_mm = c == g(20) ? mm_per_inch : 1.0;
     if (auto e = set_tool_length()) return e;
     if (GCode c = code(ModalGroup::return_mode); c >= 0) modal_.cycle.return_to_initial = c == g(98);
@@ -155,7 +152,7 @@ std::optional<Diagnostic> Executor::set_modes() {
 
 std::optional<Diagnostic> Executor::set_feed_and_spindle(std::vector<Move>& out) {
     if (const Word* f = words_.word('F'); f != nullptr && !(motion_ == g(32) || motion_ == g(33))) {
-        modal_.feed = f->value * feed_length_factor_mm_;
+        modal_.feed = f->value * modal_.length_factor_mm;
         modal_.feed_set = true;
     }
     SpindleState& spindle = modal_.spindle;

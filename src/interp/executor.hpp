@@ -114,7 +114,6 @@ private:
     BlockWords words_;
     GCode motion_ = g(80);          //!< motion code for this block (explicit or modal)
 
-    double feed_length_factor_mm_ = 1.0;  //!< units F is read in: those before the block's G20/G21
     double elapsed_s_ = 0;          //!< simulated time, s
     int last_mcode_ = 0;            //!< #4113
     double parts_done_ = 0;         //!< #3901, counted at M2/M30

@@ -168,6 +168,15 @@ std::optional<Diagnostic> Executor::check_words() {
                          "G10 needs P0 (active system) or P1 to P6 (G54 to G59)");
         }
     }
+    // `G20 F10` could mean 10 in/min or (LinuxCNC, which reads F before the units) 10 mm/min:
+    // a factor of 25.4 either way. Fanuc wants G20/G21 alone in its block; nckit refuses F
+    // beside a G20/G21 that changes the units.
+    if (const GCode units = words_.group(ModalGroup::units); units >= 0 && words_.has('F') &&
+        (units == g(20)) != (modal_.length_factor_mm != 1.0)) {
+        return error(words_.word('F')->column, "bad-combination",
+                     fmt::format("F beside G{} that changes the units is ambiguous: give G{} in a block of its own",
+                                 units / 10, units / 10));
+    }
     // A negative F is a wrong value, not a missing one: say so before the feed check below.
     // Under G32/G33 F is the lead, which sync() checks.
     if (const Word* f = words_.word('F'); f != nullptr && f->value < 0 && !is_thread(motion_)) {

@@ -48,7 +48,7 @@ TEST(DrillCycles, G83PecksBackToRAndDownToJustAboveTheLastDepth) {
 }
 
 TEST(DrillCycles, WordsStayForTheNextHoleUntilG80) {
-    EXPECT_EQ(texts("G0 Z5\nG99 G82 X1 Z-1 R1 P500 F60\nX2\nG80\nX3\n").size(), 10u);
+    EXPECT_EQ(texts("G0 Z5\nG99 G82 X1 Z-1 R1 P500 F60\nX2\nG80\nG0 X3\n").size(), 11u);
     EXPECT_EQ(error_where("G0 Z5\nG81 X1 Z-1 R1 F60\nG80\nG81 X2\n"), "missing-word 4:1");
 }
 
@@ -113,7 +113,7 @@ namespace {
 
 TEST(RunawayMain, M99LoopWithoutOutputStopsAtOnce) {
     Diagnostic d = error_of("#1 = 1\nM99\n");
-    EXPECT_EQ(where(d), " 2:1");
+    EXPECT_EQ(where(d), "macro-alarm 2:1");
     EXPECT_EQ(d.alarm, 100);
     // A pass that moves is a real loop: the block budget stops it.
     InterpreterOptions small;
@@ -123,9 +123,9 @@ TEST(RunawayMain, M99LoopWithoutOutputStopsAtOnce) {
     EXPECT_GT(r.moves.size(), 10u);
 }
 
-TEST(BlockOrder, SpindleBeforeCoolantAndFeedInTheOldUnits) {
+TEST(BlockOrder, SpindleBeforeCoolantAndNoFeedBesideAUnitChange) {
     EXPECT_EQ(texts("M8 M3 S100\n"), (Texts{"S100", "M3", "M8"}));
-    EXPECT_EQ(texts("G20 F10 G1 X1\n"), (Texts{"G1 X25.4000 Y0.0000 Z0.0000 F10.0000"}));
+    EXPECT_EQ(error_where("G20 F10 G1 X1\n"), "bad-combination 1:5");
 }
 
 }  // namespace

@@ -99,7 +99,7 @@ TEST(ToolTableWrites, MalformedG10IsLocated) {
     EXPECT_EQ(error_where("G10 L10 R3\n"), "bad-g10 1:5");
     EXPECT_EQ(error_where("G10 L11 P1\n"), "missing-word 1:5");
     EXPECT_EQ(error_where("G10 L12 P1 R1 Y3\n"), "unused-word 1:15");
-    EXPECT_EQ(error_where("G10 L7 P1 R1\n"), "bad-g10 1:5");
+    EXPECT_EQ(error_where("G10 L7 P1 R1\n"), "bad-g10 1:1");
 }
 
 TEST(ToolVariables, ModalNumbers) {
