@@ -5,8 +5,8 @@
 // the initial level (where the axis stood when the cycle mode began), the R level and the
 // bottom (the Z word). G98 returns to the initial level (or R when R lies above it), G99 to R.
 // Under G91, R counts from the initial level and Z from R. The sequence of each hole follows
-// LinuxCNC's, so `rs274` gives the same moves: rise to the return level when below it, then per hole a rapid
-// in the plane, a rapid down to R, the cycle's own moves, the return.
+// LinuxCNC's, so `rs274` gives the same moves: rise to R when below it, then per hole one rapid
+// to the hole at the return level, a rapid down to R, the cycle's own moves, the return.
 #include <algorithm>
 #include <cmath>
 
@@ -135,10 +135,10 @@ std::optional<Diagnostic> Executor::drill(std::vector<Move>& out) {
     if (back_boring) hole.clear_mm = cycle.initial_z_mm;
     if (hole.repeats == 0) return std::nullopt;  // K0: the words are kept, nothing is drilled
 
-    // Below the return level: rise to it first, where the tool stands.
-    if (!back_boring && position_[d] < hole.clear_mm) {
+    // Below R: rise to it first, where the tool stands.
+    if (!back_boring && position_[d] < hole.r_mm) {
         AxisVector up = position_;
-        up[d] = hole.clear_mm;
+        up[d] = hole.r_mm;
         if (auto e = straight(g(0), up, out)) return e;
     }
     for (int i = 0; i < hole.repeats; ++i) {
@@ -148,6 +148,9 @@ std::optional<Diagnostic> Executor::drill(std::vector<Move>& out) {
             if (w == nullptr || !configured_.contains(a)) continue;
             over[a] = modal_.incremental ? position_[a] + axis_value(a, *w) : axis_value(a, *w) + offset[a];
         }
+        // To the hole at the return level (one rapid, as LinuxCNC: it rises as it goes when the
+        // previous hole ended lower, at R under G99).
+        if (!back_boring) over[d] = std::max(position_[d], hole.clear_mm);
         if (auto e = straight(g(0), over, out)) return e;
         if (auto e = drill_hole(hole, out)) return e;
     }

@@ -93,7 +93,7 @@ TEST(PathControl, G64PSetsTheTolerance) {
 }
 
 TEST(PathControl, G64PIsInProgramUnits) {
-    EXPECT_DOUBLE_EQ(the<Line>("G20 G64 P0.01 G1 X1 F10\n").path.tolerance_mm, 0.254);
+    EXPECT_DOUBLE_EQ(the<Line>("G20\nG64 P0.01 G1 X1 F10\n").path.tolerance_mm, 0.254);
 }
 
 TEST(PathControl, G61ClearsTheTolerance) {

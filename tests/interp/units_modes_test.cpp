@@ -43,7 +43,7 @@ TEST(Units, G20ConvertsArcOffsetsAndRadius) {
     EXPECT_DOUBLE_EQ(ij.to[Axis::X], -25.4);
     EXPECT_NEAR(ij.center[Axis::X], 0.0, 1e-12);
     EXPECT_DOUBLE_EQ(ij.feed.mm_per_min, 254.0);
-    Arc r = the<Arc>("G20 G2 X2 R1 F10\n");
+    Arc r = the<Arc>("G20\nG2 X2 R1 F10\n");
     EXPECT_NEAR(r.center[Axis::X], 25.4, 1e-12);
     EXPECT_NEAR(r.center[Axis::Y], 0.0, 1e-12);
 }

@@ -33,6 +33,8 @@ def num(rng: random.Random, v: float, decimals: int = 3) -> str:
             text = text[1:]
         elif text.startswith("-0.") and rng.random() < 0.5:
             text = "-" + text[2:]
+        if text in (".", "-.", "0.", "-0.", ""):
+            text = "0"
     return text
 
 
