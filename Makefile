@@ -8,7 +8,7 @@ PREFIX     ?= /usr/local
 FUZZ_SECONDS ?= 30
 
 .PHONY: all deps deps-test configure build build-nckit run install test test-unit test-asan bench fuzz clean \
-        hal hal-install install-linuxcnc-plugin
+        hal hal-install install-linuxcnc-plugin fuzz-linuxcnc
 
 all: build
 
@@ -88,6 +88,10 @@ bench:
 fuzz:
 	@bash scripts/deps.sh build fuzz
 	@bash fuzz/run_all.sh $(FUZZ_SECONDS)
+
+# Differential fuzzing against LinuxCNC's rs274: 500 seeded random programs (CTest runs 20).
+fuzz-linuxcnc: build
+	@flock /tmp/linuxcnc.lock python3 tests/programs/fuzz_linuxcnc.py --count 500 --seed 11
 
 clean:
 	@rm -rf build

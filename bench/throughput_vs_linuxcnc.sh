@@ -3,12 +3,18 @@
 # (a finishing raster over a surface, X Y with 3 decimals, Z with 4, a feed per row) and write
 # their motions to /dev/null. Best wall time and peak RSS of 3 runs each, measured by GNU time.
 #
-# Usage: bench/throughput_vs_linuxcnc.sh [NCKIT_BINARY]   (default build/release/src/nckit)
+# Usage: bench/throughput_vs_linuxcnc.sh [NCKIT_BINARY] [--signed4]   (default build/release/src/nckit)
+#   --signed4: X Y Z all with 4 decimals and the surface centred on 0, so about half the values
+#              are negative (the harder file of the mill-programs issue).
 # Needs rs274 (linuxcnc-uspace) and /usr/bin/time (package time): scripts/deps.sh installs both.
 set -euo pipefail
 
 repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-nckit=${1:-$repo/build/release/src/nckit}
+nckit=$repo/build/release/src/nckit
+signed4=0
+for arg in "$@"; do
+  if [[ $arg == --signed4 ]]; then signed4=1; else nckit=$arg; fi
+done
 runs=3
 rows=1000 cols=1000   # rows x cols = 1,000,000 G1 blocks
 
@@ -23,7 +29,9 @@ trap 'rm -rf "$work"' EXIT
 program=$work/raster_1m.ngc
 
 # Zig-zag rows along X over z = -2 + 1.5 cos(x/18) sin(y/14), 0.2 mm apart, inside X Y 0..200.
-LC_ALL=C awk -v rows=$rows -v cols=$cols 'BEGIN {
+LC_ALL=C awk -v rows=$rows -v cols=$cols -v signed4=$signed4 'BEGIN {
+  fmt = signed4 ? "G1 X%.4f Y%.4f Z%.4f" : "G1 X%.3f Y%.3f Z%.4f"
+  shift = signed4 ? 100.0 : 0.0
   print "%"
   print "(finishing raster: " rows " rows of " cols " G1 blocks)"
   print "G21 G17 G90 G94"
@@ -34,10 +42,10 @@ LC_ALL=C awk -v rows=$rows -v cols=$cols 'BEGIN {
     y = j * 0.2
     for (k = 0; k < cols; k++) {
       i = (j % 2 == 0) ? k : cols - 1 - k
-      x = i * 0.2 + (j % 7) * 0.0125
-      z = -2 + 1.5 * cos(x / 18) * sin(y / 14)
-      if (k == 0) printf "G1 X%.3f Y%.3f Z%.4f F%d\n", x, y, z, 1800 + (j % 5) * 100
-      else        printf "G1 X%.3f Y%.3f Z%.4f\n", x, y, z
+      x = i * 0.2 + (j % 7) * 0.0125 + (signed4 ? (j % 3) * 0.00017 : 0)
+      z = -2 + 1.5 * cos(x / 18) * sin(y / 14) + (signed4 ? 2.0 : 0)
+      if (k == 0) printf fmt " F%d\n", x - shift, y - shift, z, 1800 + (j % 5) * 100
+      else        printf fmt "\n", x - shift, y - shift, z
     }
   }
   print "G0 Z25."
@@ -66,10 +74,11 @@ echo "| program | G1 blocks | rs274 -g time (s) | rs274 peak RSS (MB) | nckit mo
      "| nckit peak RSS (MB) | speed-up |"
 echo "|---|---:|---:|---:|---:|---:|---:|"
 LC_ALL=C awk -v blocks="$blocks" -v runs=$runs \
-  -v rs_s="$rs_s" -v rs_kb="$rs_kb" -v nc_s="$nc_s" -v nc_kb="$nc_kb" 'BEGIN {
+  -v rs_s="$rs_s" -v rs_kb="$rs_kb" -v nc_s="$nc_s" -v nc_kb="$nc_kb" \
+  -v label="$([[ $signed4 == 1 ]] && echo ', X Y Z 4 decimals, signed')" 'BEGIN {
   speed = (nc_s > 0) ? sprintf("%.2fx", rs_s / nc_s) : "n/a (below timer resolution)"
-  printf "| G1 surface raster | %d | %.2f | %.1f | %.2f | %.1f | %s |\n",
-         blocks, rs_s, rs_kb / 1024, nc_s, nc_kb / 1024, speed
+  printf "| G1 surface raster%s | %d | %.2f | %.1f | %.2f | %.1f | %s |\n",
+         label, blocks, rs_s, rs_kb / 1024, nc_s, nc_kb / 1024, speed
   printf "\nbest of %d runs each; time ratio rs274/nckit = %s, memory ratio rs274/nckit = %.2f\n",
          runs, speed, (nc_kb > 0) ? rs_kb / nc_kb : 0
 }'

@@ -15,6 +15,8 @@ namespace nckit::cli {
 void add_machine_options(CLI::App& verb, MachineOptions& options) {
     verb.add_option("--machine", options.machine, "machine config (TOML); default: built-in 3-axis mill");
     verb.add_option("--library", options.library, "folder of called programs, one file per O number");
+    verb.add_option("--tools", options.tools,
+                    "tool file: TOML or LinuxCNC tool.tbl (replaces the machine file's 'tools')");
     verb.add_option("--vars", options.vars,
                     "file keeping #500-#999 between runs (default: the machine file with .vars)");
     verb.add_option("--max-blocks", options.max_blocks,
@@ -150,6 +152,15 @@ std::optional<Interpreter> open_program_or_report(const std::string& program_pat
         return std::nullopt;
     }
     default_machine_in_use = options.machine.empty();
+    if (!options.tools.empty()) {
+        auto tools = load_tool_table(options.tools);
+        if (!tools) {
+            print_diagnostics(tools.diagnostics());
+            return std::nullopt;
+        }
+        machine->tools = std::move(tools).value();
+        machine->tools_file = options.tools;
+    }
     auto source = ProgramSource::open(program_path);
     if (!source) {
         print_diagnostics(source.diagnostics());

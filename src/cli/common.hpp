@@ -19,6 +19,7 @@ constexpr int exit_bad_input = 2;
 struct MachineOptions {
     std::string machine;       //!< --machine; empty: the built-in mill
     std::string library;       //!< --library: folder of O-numbered programs
+    std::string tools;         //!< --tools: tool file (TOML or LinuxCNC tool.tbl); replaces the machine's
     std::string vars;          //!< --vars: retained #500-#999; default: beside the machine file
     std::int64_t max_blocks = InterpreterOptions{}.max_blocks;
     bool block_delete = false;

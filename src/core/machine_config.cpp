@@ -40,6 +40,31 @@ void read_mcode_list(TableReader& reader, std::string_view key, std::vector<int>
     }
 }
 
+//! `tools = "FILE"`: a tool file named relative to the machine file. Its own errors keep its own
+//! FILE:LINE:COL; one that cannot be read points at the key.
+void read_tools(TableReader& reader, MachineConfig& config, ConfigSink& sink) {
+    std::optional<std::string> name = reader.text("tools", Need::optional);
+    if (!name) return;
+    if (name->empty()) {
+        sink.error(reader.region_of("tools"), "config-value", "'tools' must name a tool file");
+        return;
+    }
+    std::filesystem::path path(*name);
+    if (path.is_relative() && sink.file) path = std::filesystem::path(*sink.file).parent_path() / path;
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) {
+        sink.error(reader.region_of("tools"), "config-io", fmt::format("tool file '{}' cannot be read", path.string()));
+        return;
+    }
+    Result<ToolTable> tools = load_tool_table(path);
+    if (!tools) {
+        for (const Diagnostic& d : tools.diagnostics()) sink.diagnostics.push_back(d);
+        return;
+    }
+    config.tools = std::move(tools).value();
+    config.tools_file = path.string();
+}
+
 void read_machine(const toml::table& table, MachineConfig& config, ConfigSink& sink) {
     TableReader reader(table, "[machine]", sink);
     if (std::optional<std::string> name = reader.text("name", Need::required)) {
@@ -61,6 +86,7 @@ void read_machine(const toml::table& table, MachineConfig& config, ConfigSink& s
         config.diameter_mode = *diameter;
     }
     read_mcode_list(reader, "exact_stop_mcodes", config.exact_stop_mcodes, sink);
+    read_tools(reader, config, sink);
     read_mcode_list(reader, "laser_on_mcodes", config.laser_on_mcodes, sink);
     read_mcode_list(reader, "laser_off_mcodes", config.laser_off_mcodes, sink);
     for (int code : config.laser_off_mcodes) {
@@ -118,6 +144,13 @@ void read_travel(TableReader& reader, AxisConfig& axis, ConfigSink& sink) {
     const bool have_min = reader.number_into("min", Need::required, Sign::any, axis.min);
     const bool have_max = reader.number_into("max", Need::required, Sign::any, axis.max);
     const bool have_home = reader.number_into("home", Need::optional, Sign::any, axis.home);
+    if (auto change = reader.number("tool_change", Need::optional)) {
+        if (*change < axis.min || *change > axis.max) {
+            sink.error(reader.region_of("tool_change"), "config-value",
+                       fmt::format("'tool_change' ({}) must lie within min..max ({}..{})", *change, axis.min, axis.max));
+        }
+        axis.tool_change = *change;
+    }
     if (!have_min || !have_max) return;
     constexpr double max_travel = 1e6;  // mm (deg): a kilometre of travel is no machine's
     for (const char* key : {"min", "max"}) {

@@ -309,7 +309,9 @@ bool at_statement(Cursor cursor) {
         Cursor look = cursor;
         if (look.accept_keyword(keyword)) return true;
     }
-    return false;
+    // Fanuc reads a keyword from its first two letters: `WH [..] DO1` is WHILE.
+    Cursor look = cursor;
+    return look.accept_keyword("WH") && look.peek() == '[';
 }
 
 std::optional<Diagnostic> parse_word_expression(Cursor& cursor, Block& block, Word& word) {
@@ -353,7 +355,7 @@ std::optional<Diagnostic> parse_statement(Cursor& cursor, Block& block) {
         s.kind = StatementKind::go_to;
         return parser.unary(s.value);
     }
-    if (cursor.accept_keyword("WHILE")) {
+    if (cursor.accept_keyword("WHILE") || (cursor.accept_keyword("WH") && cursor.peek() == '[')) {
         s.kind = StatementKind::while_do;
         if (cursor.peek() != '[') return parser.format_error(cursor.column(), "'[' expected after WHILE");
         if (auto e = parser.comparison(s.condition)) return e;

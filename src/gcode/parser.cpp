@@ -50,6 +50,11 @@ public:
                 if (auto error = parse_word()) return error;
                 continue;
             }
+            if (c == ':' && block_.words.empty() && block_.statement.kind == StatementKind::none) {
+                // ISO 6983's program number: `:1234` is O1234.
+                if (auto error = parse_word('O')) return error;
+                continue;
+            }
             return unexpected(c);
         }
     }
@@ -68,9 +73,9 @@ private:
     bool is_tape_mark() {
         std::size_t p = pos_;
         if (p >= line_.size() || line_[p] != '%') return false;
-        ++p;
-        while (p < line_.size() && is_blank(line_[p])) ++p;
-        return p == line_.size() || line_[p] == ';' || line_[p] == '(';
+        // Whatever follows on the line is the tape's label (`%MPF100`, `% part 7`), not blocks:
+        // Fanuc's tape reader and CAM posts alike treat it so.
+        return true;
     }
 
     std::optional<Diagnostic> skip_comment() {
@@ -129,9 +134,9 @@ private:
         return error(column(), "syntax", fmt::format("unexpected character '{}'", c));
     }
 
-    std::optional<Diagnostic> parse_word() {
+    std::optional<Diagnostic> parse_word(char letter = 0) {
         Word word;
-        word.letter = upper(line_[pos_]);
+        word.letter = letter != 0 ? letter : upper(line_[pos_]);
         word.column = column();
         ++pos_;
         skip_blanks();

@@ -14,15 +14,6 @@ std::string g_name(GCode code) {
     return code % 10 == 0 ? fmt::format("G{}", code / 10) : fmt::format("G{}.{}", code / 10, code % 10);
 }
 
-MGroup m_group_of(int code) {
-    switch (code) {
-        case 0: case 1: case 2: case 30: case 60: return MGroup::stopping;
-        case 6: return MGroup::tool_change;
-        case 3: case 4: case 5: return MGroup::spindle;
-        case 7: case 8: case 9: return MGroup::coolant;
-        default: return MGroup::other;
-    }
-}
 
 //! M7 and M8 may run together (mist and flood); any other pair of one group conflicts.
 bool m_conflict(int a, int b) {
@@ -35,20 +26,34 @@ bool m_conflict(int a, int b) {
 
 }  // namespace
 
+MGroup m_group_of(int code) {
+    switch (code) {
+        case 0: case 1: case 2: case 30: case 60: return MGroup::stopping;
+        case 6: return MGroup::tool_change;
+        case 3: case 4: case 5: return MGroup::spindle;
+        case 7: case 8: case 9: return MGroup::coolant;
+        default: return MGroup::other;
+    }
+}
+
 std::optional<ModalGroup> group_of(GCode code) {
     switch (code) {
-        case g(4): case g(10): case g(28): case g(50): case g(52): case g(53): case g(92):
-        case g(92, 1):
+        case g(4): case g(10): case g(28): case g(30): case g(31): case g(50): case g(52): case g(53):
+        case g(92): case g(92, 1):
             return ModalGroup::non_modal;
         case g(9): return ModalGroup::exact_stop;
         case g(0): case g(1): case g(2): case g(3): case g(32): case g(33): case g(80):
+        case g(73): case g(74): case g(76): case g(81): case g(82): case g(83): case g(84):
+        case g(85): case g(86): case g(87): case g(88): case g(89):
             return ModalGroup::motion;
         case g(17): case g(18): case g(19): return ModalGroup::plane;
         case g(90): case g(91): return ModalGroup::distance;
         case g(94): case g(95): return ModalGroup::feed_mode;
         case g(20): case g(21): return ModalGroup::units;
         case g(40): return ModalGroup::cutter_comp;
-        case g(49): return ModalGroup::length_comp;
+        case g(43): case g(44): case g(43, 1): case g(49): return ModalGroup::length_comp;
+        case g(98): case g(99): return ModalGroup::return_mode;
+        case g(90, 1): case g(91, 1): return ModalGroup::arc_distance;
         case g(96): case g(97): return ModalGroup::spindle_mode;
         case g(54): case g(55): case g(56): case g(57): case g(58): case g(59):
             return ModalGroup::work_system;
@@ -99,6 +104,12 @@ std::optional<Diagnostic> collect_words(const Block& block, BlockWords& out) {
                                 fmt::format("{} is not supported", g_name(code)));
             }
             GWord& slot = out.gcodes[static_cast<std::size_t>(*group)];
+            // G80 beside a motion code (`G0 G80 Z50`, as CAM posts write it) cancels the cycle
+            // and the motion code then moves: only two motion codes conflict.
+            if (*group == ModalGroup::motion && slot.code >= 0 && (slot.code == g(80)) != (code == g(80))) {
+                if (slot.code == g(80)) slot = GWord{code, word.column};
+                continue;
+            }
             if (slot.code >= 0) {
                 return error_at(at(), "modal-conflict",
                                 fmt::format("{} and {} are in the same modal group",

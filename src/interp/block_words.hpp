@@ -15,15 +15,15 @@ using GCode = int;
 constexpr GCode g(int major, int minor = 0) { return major * 10 + minor; }
 
 enum class ModalGroup {
-    non_modal,      // G4 G10 G28 G50 G52 G53 G92 G92.1
+    non_modal,      // G4 G10 G28 G30 G31 G50 G52 G53 G92 G92.1
     exact_stop,     // G9
-    motion,         // G0 G1 G2 G3 G32 G33 G80
+    motion,         // G0 G1 G2 G3 G32 G33 G80, drilling cycles G73 G74 G76 G81-G89
     plane,          // G17 G18 G19
     distance,       // G90 G91
     feed_mode,      // G94 G95
     units,          // G20 G21
     cutter_comp,    // G40
-    length_comp,    // G49
+    length_comp,    // G43 G44 G43.1 G49
     spindle_mode,   // G96 G97
     work_system,    // G54..G59
     path_control,   // G61 G64
@@ -31,6 +31,8 @@ enum class ModalGroup {
     scaling,        // G51 (G50 alone cancels it: see program_transform.hpp)
     mirror,         // G50.1 G51.1
     rotation,       // G68 G69
+    return_mode,    // G98 G99: where a drilling cycle returns
+    arc_distance,   // G90.1 G91.1: I J K absolute or incremental
     count
 };
 constexpr std::size_t group_count = static_cast<std::size_t>(ModalGroup::count);
@@ -61,6 +63,13 @@ struct BlockWords {
     [[nodiscard]] bool has(char letter) const { return word(letter) != nullptr; }
     [[nodiscard]] bool has_m(int code) const;
 };
+
+//! G73, G74, G76, G81..G89: the drilling cycles.
+[[nodiscard]] constexpr bool is_drilling_cycle(GCode code) {
+    return code == g(73) || code == g(74) || code == g(76) || (code >= g(81) && code <= g(89) && code % 10 == 0);
+}
+
+[[nodiscard]] MGroup m_group_of(int code);
 
 //! The modal group of a G code nckit knows, or nothing for an unknown code.
 [[nodiscard]] std::optional<ModalGroup> group_of(GCode code);

@@ -15,7 +15,7 @@ constexpr double least_increment_inch = 0.0001;
 }  // namespace
 
 Executor::Executor(const MachineConfig& machine, const InterpreterOptions& options)
-    : machine_(machine), options_(options) {
+    : machine_(machine), options_(options), tools_(machine.tools) {
     for (const AxisConfig& axis : machine.axes) {
         configured_.insert(axis.axis);
         rotary_[index(axis.axis)] = axis.kind == AxisKind::rotary;
@@ -99,12 +99,12 @@ std::optional<Diagnostic> Executor::run(const Block& block, std::vector<Move>& o
 
     if (auto e = set_modes()) return fail(*e);
     if (auto e = set_feed_and_spindle(out)) return fail(*e);
-    emit_mcodes(out, false);
+    if (auto e = emit_mcodes(out, false)) return fail(*e);
     if (auto e = dwell(out)) return fail(*e);
     if (auto e = set_coordinates()) return fail(*e);
     if (auto e = set_transform()) return fail(*e);
     if (auto e = transformed_move(out)) return fail(*e);
-    emit_mcodes(out, true);
+    if (auto e = emit_mcodes(out, true)) return fail(*e);
     program_end = words_.has_m(2) || words_.has_m(30);
     if (program_end) parts_done_ += 1;
     if (words_.mcode_count > 0) last_mcode_ = words_.mcodes[words_.mcode_count - 1].code;
@@ -116,6 +116,9 @@ std::optional<Diagnostic> Executor::set_modes() {
     auto code = [&](ModalGroup group) { return words_.group(group); };
     if (GCode c = code(ModalGroup::diameter); c >= 0) modal_.diameter_mode = c == g(7);
     if (GCode c = code(ModalGroup::units); c >= 0) modal_.length_factor_mm = c == g(20) ? mm_per_inch : 1.0;
+    if (auto e = set_tool_length()) return e;
+    if (GCode c = code(ModalGroup::return_mode); c >= 0) modal_.cycle.return_to_initial = c == g(98);
+    if (GCode c = code(ModalGroup::arc_distance); c >= 0) modal_.arc_centers_absolute = c == g(90, 1);
     if (GCode c = code(ModalGroup::feed_mode); c >= 0) {
         modal_.feed_mode = c == g(95) ? FeedMode::per_revolution : FeedMode::per_minute;
     }
@@ -135,7 +138,15 @@ std::optional<Diagnostic> Executor::set_modes() {
         }
     }
     if (GCode c = code(ModalGroup::distance); c >= 0) modal_.incremental = c == g(91);
-    if (GCode c = code(ModalGroup::motion); c >= 0) modal_.motion = c;
+    if (GCode c = code(ModalGroup::motion); c >= 0) {
+        // Any other group-1 code (G80 included) ends a drilling cycle and forgets its words.
+        if (c != modal_.motion && is_drilling_cycle(modal_.motion) && !is_drilling_cycle(c)) {
+            bool keep_return = modal_.cycle.return_to_initial;
+            modal_.cycle = CycleState{};
+            modal_.cycle.return_to_initial = keep_return;
+        }
+        modal_.motion = c;
+    }
     return std::nullopt;
 }
 
@@ -146,7 +157,7 @@ std::optional<Diagnostic> Executor::set_feed_and_spindle(std::vector<Move>& out)
     }
     SpindleState& spindle = modal_.spindle;
     if (GCode c = words_.group(ModalGroup::spindle_mode); c >= 0) spindle.constant_surface_speed = c == g(96);
-    if (const Word* d = words_.word('D')) {
+    if (const Word* d = words_.word('D'); d != nullptr && words_.group(ModalGroup::spindle_mode) == g(96)) {
         if (d->value <= 0) return error(d->column, "bad-value", "G96 D (maximum rpm) must be positive");
         spindle.rpm_clamp = d->value;
     }
@@ -177,15 +188,24 @@ std::optional<Diagnostic> Executor::set_feed_and_spindle(std::vector<Move>& out)
         push(out, io);
     }
     if (const Word* t = words_.word('T')) {
-        modal_.tool = static_cast<int>(t->value);
-        push(out, Io{IoKind::tool_select, modal_.tool, 0});
+        modal_.tool.selected = static_cast<int>(t->value);
+        push(out, Io{IoKind::tool_select, modal_.tool.selected, 0});
     }
     return std::nullopt;
 }
 
-void Executor::emit_mcodes(std::vector<Move>& out, bool stopping) {
-    for (std::size_t i = 0; i < words_.mcode_count; ++i) {
-        int code = words_.mcodes[i].code;
+std::optional<Diagnostic> Executor::emit_mcodes(std::vector<Move>& out, bool stopping) {
+    // RS-274/NGC's order whatever the order written (`M8 M3` starts the spindle first): tool
+    // change, spindle, coolant, the other codes; the stops after the motion.
+    std::array<std::size_t, 5> order{};
+    std::size_t count = 0;
+    for (MGroup group : {MGroup::tool_change, MGroup::spindle, MGroup::coolant, MGroup::other, MGroup::stopping}) {
+        for (std::size_t i = 0; i < words_.mcode_count; ++i) {
+            if (m_group_of(words_.mcodes[i].code) == group) order[count++] = i;
+        }
+    }
+    for (std::size_t k = 0; k < count; ++k) {
+        int code = words_.mcodes[order[k]].code;
         bool is_stop = code == 0 || code == 1 || code == 2 || code == 30 || code == 60;
         if (is_stop != stopping) continue;
         Io io{IoKind::mcode, code, 0};
@@ -198,9 +218,12 @@ void Executor::emit_mcodes(std::vector<Move>& out, bool stopping) {
             io.rpm_clamp = spindle.rpm_clamp;
         } else if (code == 5 || code == 2 || code == 30) {
             spindle.direction = 0;
+        } else if (code == 6) {
+            if (auto e = change_tool(out)) return e;
         }
         push(out, io);
     }
+    return std::nullopt;
 }
 
 std::optional<Diagnostic> Executor::dwell(std::vector<Move>& out) {
@@ -239,7 +262,9 @@ std::optional<Diagnostic> Executor::set_coordinates() {
             if (const Word* w = words_.word(letter(axis.axis))) apply(axis.axis, axis_value(axis.axis, *w));
         }
     };
-    if (code == g(10)) {
+    if (code == g(10) && words_.word('L')->value != 2 && words_.word('L')->value != 20) {
+        write_tool_table();
+    } else if (code == g(10)) {
         const Word* p = words_.word('P');
         auto l = static_cast<int>(words_.word('L')->value);
         auto number = static_cast<int>(p->value);
@@ -247,14 +272,15 @@ std::optional<Diagnostic> Executor::set_coordinates() {
         AxisVector& work = offsets_.work[system];
         each_axis_word([&](Axis a, double v) {
             if (l == 20) {
-                work[a] = position_[a] - offsets_.g92[a] - offsets_.g52[a] - v;
+                work[a] = position_[a] - offsets_.g92[a] - offsets_.g52[a] - modal_.tool_offset[a] - v;
             } else {
                 work[a] = modal_.incremental ? work[a] + v : v;
             }
         });
     } else if (code == g(92) || (code == g(50) && block_has_axis_words())) {
         each_axis_word([&](Axis a, double v) {
-            offsets_.g92[a] = position_[a] - offsets_.work[modal_.work_system][a] - offsets_.g52[a] - v;
+            offsets_.g92[a] = position_[a] - offsets_.work[modal_.work_system][a] - offsets_.g52[a] -
+                              modal_.tool_offset[a] - v;
         });
     } else if (code == g(92, 1)) {
         offsets_.g92 = AxisVector{};

@@ -13,6 +13,10 @@
 
 namespace nckit::interp {
 
+//! #2001-#2999: the tool offsets (executor_tools.cpp).
+inline constexpr std::int64_t first_tool_variable = 2001;
+inline constexpr std::int64_t last_tool_variable = 2999;
+
 class Executor {
 public:
     Executor(const MachineConfig& machine, const InterpreterOptions& options);
@@ -47,7 +51,7 @@ private:
     // Actions before motion (executor.cpp).
     std::optional<Diagnostic> set_modes();
     std::optional<Diagnostic> set_feed_and_spindle(std::vector<Move>& out);
-    void emit_mcodes(std::vector<Move>& out, bool stopping);
+    std::optional<Diagnostic> emit_mcodes(std::vector<Move>& out, bool stopping);
     std::optional<Diagnostic> dwell(std::vector<Move>& out);
     std::optional<Diagnostic> set_coordinates();
 
@@ -76,6 +80,21 @@ private:
     void push(std::vector<Move>& out, decltype(Move::what) what) const;
     [[nodiscard]] double duration_s(const Move& move) const;  //!< for the simulated clock
 
+    // Tools (executor_tools.cpp).
+    [[nodiscard]] AxisVector program_offset() const;  //!< work + G92 + G52 + tool length, mm
+    std::optional<Diagnostic> number_word(char letter, int& out) const;  //!< H, D: whole numbers
+    std::optional<Diagnostic> set_tool_length();
+    std::optional<Diagnostic> change_tool(std::vector<Move>& out);
+    [[nodiscard]] std::optional<Diagnostic> check_tool_table_write() const;
+    void write_tool_table();
+    [[nodiscard]] std::optional<MacroValue> read_tool_variable(std::int64_t number) const;
+    [[nodiscard]] std::optional<SystemVariables::WriteError> write_tool_variable(std::int64_t number, double value);
+
+    // Drilling cycles (executor_cycles.cpp).
+    std::optional<Diagnostic> check_cycle_words() const;
+    std::optional<Diagnostic> drill(std::vector<Move>& out);
+    std::optional<Diagnostic> drill_hole(const struct HolePlan& hole, std::vector<Move>& out);
+
     // System variable helpers (executor_system_variables.cpp).
     [[nodiscard]] std::optional<MacroValue> modal_code(int group) const;
     [[nodiscard]] const AxisConfig* axis_by_number(std::int64_t one_based) const;
@@ -89,6 +108,7 @@ private:
 
     ModalState modal_;
     Offsets offsets_;
+    ToolTable tools_;      //!< the machine's table; G10 and #2001- change it during the run
     AxisVector position_;  //!< machine coordinates, mm / deg
     ProgramTransform transform_;
     AxisVector programmed_;  //!< position_ before the transform (while one is active)

@@ -20,7 +20,7 @@ constexpr double radius_relative_tolerance = 0.001;
 
 AxisVector Executor::target_from_words(bool machine_coordinates) const {
     AxisVector target = position_;
-    AxisVector offset = offsets_.total(modal_.work_system);
+    AxisVector offset = program_offset();
     for (const AxisConfig& axis : machine_.axes) {
         const Word* word = words_.word(letter(axis.axis));
         if (word == nullptr) continue;
@@ -47,7 +47,7 @@ double Executor::spindle_rpm_at(double work_x_radius_mm) const {
 }
 
 double Executor::work_x() const {
-    return position_[Axis::X] - offsets_.total(modal_.work_system)[Axis::X];
+    return position_[Axis::X] - program_offset()[Axis::X];
 }
 
 Feed Executor::current_feed() const {
@@ -89,11 +89,15 @@ std::optional<Diagnostic> Executor::check_line_travel(const AxisVector& target) 
 
 std::optional<Diagnostic> Executor::move(std::vector<Move>& out) {
     GCode non_modal = words_.group(ModalGroup::non_modal);
-    if (non_modal == g(28)) return home(out);
+    if (non_modal == g(28) || non_modal == g(30)) return home(out);
     // G92.1 takes no axis words: check_words() gave any to the motion mode, so they move.
     if (non_modal == g(4) || non_modal == g(10) || non_modal == g(52) || non_modal == g(92) ||
-        non_modal == g(50) || motion_ == g(80)) {
+        non_modal == g(50) || motion_ == g(80) || words_.group(ModalGroup::length_comp) == g(43, 1)) {
         return std::nullopt;
+    }
+    if (is_drilling_cycle(motion_)) {
+        if (!block_has_axis_words()) return std::nullopt;
+        return drill(out);
     }
     bool arc_offsets = words_.has('I') || words_.has('J') || words_.has('K') || words_.has('R');
     bool is_arc = motion_ == g(2) || motion_ == g(3);
@@ -107,6 +111,8 @@ std::optional<Diagnostic> Executor::move(std::vector<Move>& out) {
 std::optional<Diagnostic> Executor::straight(GCode motion, const AxisVector& target, std::vector<Move>& out) {
     if (auto e = check_line_travel(target)) return e;
     Line line{position_, target, Feed{}, motion == g(0), modal_.path};
+    // A drilling cycle's moves end at rest: each is a reversal or a change of kind.
+    if (is_drilling_cycle(motion_)) line.path.exact_stop = true;
     if (!line.rapid) line.feed = current_feed();
     if (words_.group(ModalGroup::exact_stop) >= 0) line.path.exact_stop = true;
     push(out, line);
@@ -118,10 +124,13 @@ std::optional<Diagnostic> Executor::home(std::vector<Move>& out) {
     // Fanuc and LinuxCNC: through the intermediate point the axis words give (in the active
     // distance mode), then to the reference point, each by rapid; with no axis words, every axis
     // goes straight to its reference point.
+    // G30: the second reference point, the machine's tool-change position where it has one.
+    const bool second = words_.group(ModalGroup::non_modal) == g(30);
     AxisVector reference = position_;
     bool any_word = block_has_axis_words();
     for (const AxisConfig& axis : machine_.axes) {
-        if (!any_word || words_.has(letter(axis.axis))) reference[axis.axis] = axis.home;
+        double point = second && axis.tool_change ? *axis.tool_change : axis.home;
+        if (!any_word || words_.has(letter(axis.axis))) reference[axis.axis] = point;
     }
     if (any_word) {
         if (auto e = straight(g(0), target_from_words(false), out)) return e;
@@ -171,7 +180,7 @@ std::optional<Diagnostic> Executor::arc(GCode motion, const AxisVector& target, 
         double half = chord / 2.0;
         double radius = std::abs(r);
         if (radius < half) {
-            if (half - radius > options_.arc_radius_tolerance_mm) {
+            if (half - radius > options_.r_arc_tolerance_mm) {
                 return error(r_word->column, "bad-arc",
                              fmt::format("radius {:.4f} mm is too small to reach the end point "
                                          "({:.4f} mm away)", radius, chord));
@@ -192,13 +201,23 @@ std::optional<Diagnostic> Executor::arc(GCode motion, const AxisVector& target, 
         // G18's plane runs Z then X, but its offsets are still named I (X) and K (Z).
         double o1 = arc.plane == Plane::zx ? offset('K') : offset(first);
         double o2 = arc.plane == Plane::zx ? offset('I') : offset(second);
-        arc.center[p.first] = position_[p.first] + o1;
-        arc.center[p.second] = position_[p.second] + o2;
+        if (modal_.arc_centers_absolute) {
+            // G90.1: I J K are the centre's coordinates in the work system (absent: 0).
+            AxisVector origin = program_offset();
+            arc.center[p.first] = origin[p.first] + o1;
+            arc.center[p.second] = origin[p.second] + o2;
+        } else {
+            arc.center[p.first] = position_[p.first] + o1;
+            arc.center[p.second] = position_[p.second] + o2;
+        }
         double r0 = arc_start_radius(arc);
         double r1 = arc_end_radius(arc);
         if (r0 < full_circle_mm) return error(motion_column(), "bad-arc", "arc has zero radius");
         double mismatch = std::abs(r1 - r0);
-        if (mismatch > options_.arc_radius_tolerance_mm && mismatch > radius_relative_tolerance * r0) {
+        // LinuxCNC's inch tolerance is ten times its metric one in its own unit: 2.54 times in mm.
+        const double tolerance = options_.arc_radius_tolerance_mm * (modal_.length_factor_mm != 1.0 ? 2.54 : 1.0);
+        const double relative = mismatch / std::max(r0, r1);
+        if (mismatch > 100.0 * tolerance || (mismatch > tolerance && relative > radius_relative_tolerance)) {
             return error(motion_column(), "bad-arc",
                          fmt::format("end point is not on the arc: radius {:.4f} mm at the start, "
                                      "{:.4f} mm at the end", r0, r1));

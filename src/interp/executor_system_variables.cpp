@@ -43,9 +43,9 @@ std::optional<MacroValue> Executor::modal_code(int group) const {
         case 5: return code(modal_.feed_mode == FeedMode::per_revolution ? 95 : 94);
         case 6: return code(modal_.length_factor_mm != 1.0 ? 20 : 21);
         case 7: return code(40);
-        case 8: return code(49);
-        case 9: return code(80);
-        case 10: return code(98);
+        case 8: return code(modal_.tool.length_mode / 10.0);
+        case 9: return code(is_drilling_cycle(modal_.motion) ? modal_.motion / 10 : 80);
+        case 10: return code(modal_.cycle.return_to_initial ? 98 : 99);
         case 11: return code(50);
         case 13: return code(modal_.spindle.constant_surface_speed ? 96 : 97);
         case 14: return code(54 + static_cast<double>(modal_.work_system));
@@ -59,9 +59,9 @@ std::optional<MacroValue> Executor::read_system(std::int64_t n) const {
     switch (n) {
         case 3901: return MacroValue::of(parts_done_);
         case 3902: return MacroValue::of(parts_required_);
-        case 4107: return MacroValue::of(0);  // D: no cutter compensation
+        case 4107: return MacroValue::of(modal_.tool.d_number);
         case 4109: return MacroValue::of(modal_.feed / modal_.length_factor_mm);
-        case 4111: return MacroValue::of(0);  // H: no tool length offsets
+        case 4111: return MacroValue::of(modal_.tool.h_number);
         case 4113: return MacroValue::of(last_mcode_);
         case 4119: {
             // S as programmed: the surface speed is kept in m/min, but a G20 program wrote ft/min.
@@ -70,10 +70,11 @@ std::optional<MacroValue> Executor::read_system(std::int64_t n) const {
             double speed = spindle.surface_speed_m_min;
             return MacroValue::of(inch_units() ? speed / m_per_foot : speed);
         }
-        case 4120: return MacroValue::of(modal_.tool);
+        case 4120: return MacroValue::of(modal_.tool.selected);
         default: break;
     }
-    const AxisVector work = position_ - offsets_.total(modal_.work_system);
+    if (n >= first_tool_variable && n <= last_tool_variable) return read_tool_variable(n);
+    const AxisVector work = position_ - program_offset();
     auto axis_value = [&](std::int64_t base, const AxisVector& source) -> std::optional<MacroValue> {
         const AxisConfig* axis = axis_by_number(n - base + 1);
         if (axis == nullptr) return MacroValue{};
@@ -82,6 +83,7 @@ std::optional<MacroValue> Executor::read_system(std::int64_t n) const {
     if (n >= 5001 && n < 5001 + axes_per_block) return axis_value(5001, work);
     if (n >= 5021 && n < 5021 + axes_per_block) return axis_value(5021, position_);
     if (n >= 5041 && n < 5041 + axes_per_block) return axis_value(5041, work);
+    if (n >= 5081 && n < 5081 + axes_per_block) return axis_value(5081, modal_.tool_offset);
     if (n >= work_offset_base && n < work_offset_base + 6 * work_offset_stride) {
         std::int64_t system = (n - work_offset_base) / work_offset_stride;
         std::int64_t slot = (n - work_offset_base) % work_offset_stride;
@@ -101,6 +103,7 @@ std::optional<SystemVariables::WriteError> Executor::write_system(std::int64_t n
         parts_required_ = value;
         return std::nullopt;
     }
+    if (n >= first_tool_variable && n <= last_tool_variable) return write_tool_variable(n, value);
     if (n >= work_offset_base && n < work_offset_base + 6 * work_offset_stride) {
         std::int64_t system = (n - work_offset_base) / work_offset_stride;
         std::int64_t slot = (n - work_offset_base) % work_offset_stride;

@@ -12,7 +12,7 @@ namespace nckit::interp {
 std::optional<Diagnostic> Executor::set_transform() {
     if (!ProgramTransform::sets_transform(words_)) return std::nullopt;
     const bool was_active = transform_.active();
-    const AxisVector offset = offsets_.total(modal_.work_system);
+    const AxisVector offset = program_offset();
     const AxisVector programmed_work = (was_active ? programmed_ : position_) - offset;
     auto value = [&](Axis axis, const Word& word) { return axis_value(axis, word); };
     if (auto e = transform_.apply(words_, modal_.plane, programmed_work, value)) {
@@ -40,7 +40,7 @@ std::optional<Diagnostic> Executor::transformed_move(std::vector<Move>& out) {
         return e;
     }
     const AxisVector programmed_end = position_;
-    const AxisVector offset = offsets_.total(modal_.work_system);
+    const AxisVector offset = program_offset();
     auto to_machine = [&](const AxisVector& p) { return transform_.map(p - offset) + offset; };
     AxisVector at = actual;
     position_ = actual;  // travel checks below measure from the real position

@@ -16,6 +16,28 @@ struct SpindleState {
     double rpm_clamp = 0;            //!< G50 S, rpm; 0 = none
 };
 
+//! Tool selection and the offsets applied from the tool table.
+struct ToolState {
+    int selected = 0;             //!< last T word (#4120)
+    int in_spindle = 0;           //!< tool put in by M6
+    int h_number = 0;             //!< modal H (#4111)
+    int d_number = 0;             //!< modal D (#4107)
+    GCode length_mode = g(49);    //!< G43, G44, G43.1 or G49
+};
+
+//! The modal words of a drilling cycle (G73-G89): kept until G80 or another group-1 code.
+struct CycleState {
+    bool return_to_initial = true;   //!< G98 (initial level) / G99 (R level)
+    bool r_set = false;
+    double r_word = 0;               //!< R as programmed, program units converted to mm
+    bool z_set = false;
+    double z_word = 0;               //!< Z as programmed (converted to mm; incremental or absolute)
+    double q_mm = 0;                 //!< G73/G83 peck depth, G76/G87 shift
+    double p_s = 0;                  //!< dwell at the bottom, s
+    double initial_z_mm = 0;         //!< machine Z when the cycle started (G98 level)
+    bool active = false;             //!< a cycle has run since the last group-1 change
+};
+
 struct ModalState {
     GCode motion = g(0);            //!< active group-1 code; g(80) = no motion mode
     Plane plane = Plane::xy;
@@ -28,7 +50,10 @@ struct ModalState {
     double feed = 0;                //!< mm/min (G94) or mm/rev (G95), converted to mm
     bool feed_set = false;
     SpindleState spindle;
-    int tool = 0;
+    ToolState tool;
+    CycleState cycle;
+    AxisVector tool_offset;         //!< G43/G44/G43.1 length offset in machine coordinates, mm
+    bool arc_centers_absolute = false;  //!< G90.1: I J K are absolute centre coordinates
 };
 
 //! Every offset between machine and program coordinates, all in mm / deg.

@@ -127,6 +127,8 @@ private:
     Block scan_;             // scratch for searches (GOTO, skipping a loop)
     std::uint64_t line_offset_ = 0;   // where the block being run starts in its file
     std::int64_t counted_blocks_ = 0;
+    std::uint64_t moves_made_ = 0;          // moves and I/O events of the whole run
+    std::uint64_t moves_at_main_pass_ = 0;  // moves_made_ when M99 last restarted the main program
     std::int64_t last_sequence_ = 0;  // #4114
     double timer_ms_base_s_ = 0;      // #3001 = (elapsed - base) in ms
     double timer_hours_base_s_ = 0;   // #3002

@@ -137,6 +137,15 @@ std::optional<Diagnostic> ProgramRunner::return_from_call(const Block& block, st
     // M99 P<n> goes back to the caller's N<n> at once: the repeats still to run are dropped,
     // since N<n> is no line of the called program.
     bool again = frames_.size() == 1 || (f.repeats_left > 1 && sequence < 0);
+    if (frames_.size() == 1) {
+        // A pass of the main program that made no move and no output would repeat itself for
+        // ever (nothing outside the program changes in a simulation): stop it at once.
+        if (moves_made_ == moves_at_main_pass_) {
+            return alarm_at(block, column, alarm::too_many_blocks,
+                            "M99 restarts the main program, whose last pass made no move or output: an endless loop");
+        }
+        moves_at_main_pass_ = moves_made_;
+    }
     if (again) {
         // M99 in the main program starts it again; in a called one it runs the next repeat.
         if (frames_.size() > 1) --f.repeats_left;
@@ -222,6 +231,7 @@ std::optional<InterpResult> ProgramRunner::run_nc_block(const Block& block, std:
     bool program_end = false;
     if (!scan_.words.empty()) {
         if (auto error = executor_.run(scan_, pending, program_end)) return InterpResult(std::move(*error));
+        moves_made_ += pending.size() - before;
     }
     if (program_end) return InterpResult(ProgramEnd{});
     if (m98 != nullptr) {

@@ -72,8 +72,10 @@ TEST(Arc, HalfCircleByRadius) {
 }
 
 TEST(Arc, RadiusJustShortOfHalfTheChordIsStretched) {
-    // 0.005 mm short: within the 0.01 mm tolerance, so the arc becomes a half circle.
-    Arc arc = the<Arc>("G2 X20 R9.995 F100\n");
+    // 0.001 mm short: within LinuxCNC's 0.00127 mm, so the arc becomes a half circle; 0.002 mm
+    // short is refused, as rs274 refuses it.
+    EXPECT_EQ(error_where("G2 X20 R9.998 F100\n"), "bad-arc 1:8");
+    Arc arc = the<Arc>("G2 X20 R9.999 F100\n");
     EXPECT_NEAR(arc.center[Axis::X], 10.0, 1e-12);
     EXPECT_NEAR(arc.center[Axis::Y], 0.0, 1e-12);
 }
@@ -98,14 +100,24 @@ TEST(Arc, EndOffTheCircleWithinToleranceIsAccepted) {
 }
 
 TEST(Arc, RelativeToleranceAllowsMoreOnBigArcs) {
-    // 0.05 mm off on a 100 mm radius: beyond 0.01 mm but within 0.1 %.
+    // 0.05 mm off on a 100 mm radius: beyond 0.028 mm but within 0.1 %.
     moves_of("G0 X100\nG3 X0 Y100.05 I-100 F100\n");
+    // 0.03 mm off a 10 mm radius: beyond both (as rs274); 0.02 mm off: within the 0.028 mm.
+    EXPECT_EQ(error_where("G0 X10\nG3 X0 Y10.03 I-10 F100\n"), "bad-arc 2:1");
+    moves_of("G0 X10\nG3 X0 Y10.02 I-10 F100\n");
+    // More than 100 times the tolerance is refused whatever the radius.
+    EXPECT_EQ(error_where("G0 X5000\nG3 X0 Y5003 I-5000 F100\n", [] {
+                  MachineConfig m = default_mill();
+                  for (AxisConfig& a : m.axes) { a.min = -6000; a.max = 6000; }
+                  return m;
+              }()), "bad-arc 2:1");
 }
 
 TEST(Arc, ToleranceIsAnOption) {
     InterpreterOptions strict;
     strict.arc_radius_tolerance_mm = 0.001;
-    // 0.005 mm off a 1 mm radius: past 0.1 % and past the strict 0.001 mm, within the default.
+    // 0.005 mm off a 1 mm radius: past 0.1 % and past the strict 0.001 mm, within the default
+    // 0.028 mm.
     const char* program = "G0 X1\nG3 X0 Y1.005 I-1 F100\n";
     moves_of(program);
     RunResult r = run_program(program, default_mill(), strict);

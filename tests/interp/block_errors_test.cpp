@@ -21,8 +21,8 @@ TEST(BlockErrors, UnsupportedGCode) {
     EXPECT_EQ(where(d), "unsupported-gcode 1:7");
     EXPECT_EQ(d.message, "G41 is not supported");
     EXPECT_EQ(error_of("G92.2\n").message, "G92.2 is not supported");
-    EXPECT_EQ(error_where("G43 H1\n"), "unsupported-gcode 1:1");
-    EXPECT_EQ(error_where("G81 X1 Y1 Z-1 R1\n"), "unsupported-gcode 1:1");
+    EXPECT_EQ(error_where("G43.4 H1\n"), "unsupported-gcode 1:1");
+    EXPECT_EQ(error_where("G81.1 X1 Y1 Z-1 R1\n"), "unsupported-gcode 1:1");
     EXPECT_EQ(error_where("G1.5\n"), "unsupported-gcode 1:1");
 }
 
@@ -108,10 +108,12 @@ TEST(BlockErrors, SequenceNumberMustStartTheBlock) {
 }
 
 TEST(BlockErrors, UnsupportedLetter) {
-    Diagnostic d = error_of("G0 X1 D1\n");
-    EXPECT_EQ(where(d), "unsupported-word 1:7");
-    EXPECT_EQ(d.message, "D word is not supported (except as G96 D<max rpm>)");
-    EXPECT_EQ(error_where("H2\n"), "unsupported-word 1:1");
+    Diagnostic d = error_of("G0 X1 V1\n");
+    EXPECT_EQ(where(d), "unknown-axis 1:7");
+    // D and H alone set the modal offset numbers (#4107, #4111); they must be whole numbers.
+    moves_of("G0 X1 D1\nH2\n");
+    EXPECT_EQ(error_where("G0 X1 D1.5\n"), "bad-value 1:7");
+    EXPECT_EQ(error_where("H-2\n"), "bad-value 1:1");
 }
 
 TEST(BlockErrors, TwoCodesThatBothUseAxisWords) {
@@ -119,9 +121,10 @@ TEST(BlockErrors, TwoCodesThatBothUseAxisWords) {
     EXPECT_EQ(where(d), "modal-conflict 1:1");
     EXPECT_EQ(d.message, "two G codes in this block both use the axis words");
     EXPECT_EQ(error_where("G10 L2 P1 G0 X1\n"), "modal-conflict 1:11");
-    EXPECT_EQ(error_where("G28 G0 X0\n"), "modal-conflict 1:5");
+    moves_of("G28 G0 X0\n");  // Fanuc: the G0 only sets the mode, G28 takes the axis words
+    EXPECT_EQ(error_where("G28 G2 X0 I1 F1\n"), "modal-conflict 1:5");
     EXPECT_EQ(error_where("G52 G1 X0 F1\n"), "modal-conflict 1:5");
-    moves_of("G0 G92 S1\nG1 G28 F1\n");  // no axis words: no conflict
+    moves_of("G1 G28 F1\n");  // no axis words: no conflict
 }
 
 // ---- unused words -------------------------------------------------------------------------
@@ -155,7 +158,7 @@ TEST(UnusedWords, CentreOffsetsWithoutArc) {
 TEST(UnusedWords, RWithoutArc) {
     Diagnostic d = error_of("G1 X1 R1 F1\n");
     EXPECT_EQ(where(d), "unused-word 1:7");
-    EXPECT_EQ(d.message, "R word with no G2/G3 to use it");
+    EXPECT_EQ(d.message, "R word with no G2/G3, drilling cycle or G10 L1-L13 to use it");
 }
 
 TEST(UnusedWords, EWithoutThread) {
@@ -167,7 +170,7 @@ TEST(UnusedWords, EWithoutThread) {
 TEST(UnusedWords, PWithoutG4G10OrG64) {
     Diagnostic d = error_of("G1 X1 P1 F1\n");
     EXPECT_EQ(where(d), "unused-word 1:7");
-    EXPECT_EQ(d.message, "P word with no G4, G10 or G64 to use it");
+    EXPECT_EQ(d.message, "P word with no G4, G10, G64 or drilling cycle to use it");
     EXPECT_EQ(error_where("G61 P1\n"), "unused-word 1:5");
     EXPECT_EQ(error_where("G64 P0.1\nP0.2\n"), "unused-word 2:1") << "G64 P is not modal as a word";
     EXPECT_EQ(error_where("G2 X10 R5 P2 F1\n"), "unused-word 1:11") << "no multi-turn P on arcs";
@@ -176,13 +179,13 @@ TEST(UnusedWords, PWithoutG4G10OrG64) {
 TEST(UnusedWords, QWithoutG64) {
     Diagnostic d = error_of("G1 X1 Q1 F1\n");
     EXPECT_EQ(where(d), "unused-word 1:7");
-    EXPECT_EQ(d.message, "Q word with no G64 to use it");
+    EXPECT_EQ(d.message, "Q word with no G64 or drilling cycle to use it");
 }
 
 TEST(UnusedWords, LWithoutG10) {
     Diagnostic d = error_of("G0 X1 L2\n");
     EXPECT_EQ(where(d), "unused-word 1:7");
-    EXPECT_EQ(d.message, "L word with no G10 to use it");
+    EXPECT_EQ(d.message, "L word with no G10 or drilling cycle to use it");
 }
 
 // ---- arcs in the wrong plane ----------------------------------------------------------------
@@ -207,8 +210,8 @@ TEST(BlockErrors, ArcWithBothRAndCentreOffset) {
 TEST(G10Errors, NeedsL2OrL20) {
     Diagnostic d = error_of("G0 X1\nG10 P1 X1\n");
     EXPECT_EQ(where(d), "bad-g10 2:1");
-    EXPECT_EQ(d.message, "G10 needs L2 or L20");
-    EXPECT_EQ(error_where("X1 G10 L1 P1\n"), "bad-g10 1:4");
+    EXPECT_EQ(d.message, "G10 needs L1, L2, L10-L13 or L20");
+    EXPECT_EQ(error_where("X1 G10 L7 P1\n"), "bad-g10 1:4");
     EXPECT_EQ(error_where("G10 L2.5 P1 X1\n"), "bad-g10 1:1");
 }
 

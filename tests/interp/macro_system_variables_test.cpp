@@ -95,7 +95,7 @@ TEST(MacroSystemVariables, ModalGCodesFollowTheProgram) {
 
 TEST(MacroSystemVariables, ModalValues) {
     EXPECT_EQ(value_after("G1 X1 F250\n#1=#4109"), 250.0);
-    EXPECT_NEAR(*value_after("G20 G1 X1 F12.5\n#1=#4109"), 12.5, 1e-12);  // program units: in/min
+    EXPECT_NEAR(*value_after("G20\nG1 X1 F12.5\n#1=#4109"), 12.5, 1e-12);  // program units: in/min
     EXPECT_EQ(value_after("M8\n#1=#4113"), 8.0);
     EXPECT_EQ(value_after("M8 M3 S100\n#1=#4113"), 3.0);
     EXPECT_EQ(value_after("N50 G1 X1 F100\n#1=#4114"), 50.0);

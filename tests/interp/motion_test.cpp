@@ -93,7 +93,7 @@ TEST(PathControl, G64PSetsTheTolerance) {
 }
 
 TEST(PathControl, G64PIsInProgramUnits) {
-    EXPECT_DOUBLE_EQ(the<Line>("G20 G64 P0.01 G1 X1 F10\n").path.tolerance_mm, 0.254);
+    EXPECT_DOUBLE_EQ(the<Line>("G20\nG64 P0.01 G1 X1 F10\n").path.tolerance_mm, 0.254);
 }
 
 TEST(PathControl, G61ClearsTheTolerance) {
@@ -125,15 +125,16 @@ TEST(Motion, G53MovesInMachineCoordinatesForOneBlock) {
                      "G1 X100.0000 Y2.0000 Z-1.0000 F100.0000"}));
 }
 
-TEST(Motion, G53RefusesIncrementalMode) {
-    EXPECT_EQ(error_where("G0 X5\nG91 G53 G0 X1\n"), "bad-combination 2:5");
-    EXPECT_EQ(error_where("G0 X5\nG91\nG53 G0 X1\n"), "bad-combination 3:1");
+TEST(Motion, G53IsAbsoluteEvenUnderG91) {
+    // Machine coordinates are absolute by nature; a Fanuc control reads G53 so under G91 too.
+    EXPECT_EQ(texts("G0 X5\nG91 G53 G0 X1\n"), (Texts{"G0 X5.0000 Y0.0000 Z0.0000", "G0 X1.0000 Y0.0000 Z0.0000"}));
     EXPECT_EQ(texts("G91 G0 X5\nG90 G53 G0 X1\n"), (Texts{"G0 X5.0000 Y0.0000 Z0.0000", "G0 X1.0000 Y0.0000 Z0.0000"}));
 }
 
-TEST(Motion, G53UsesModalG1) {
-    EXPECT_EQ(texts("G1 X5 F50\nG53 X1\n"),
-              (Texts{"G1 X5.0000 Y0.0000 Z0.0000 F50.0000", "G1 X1.0000 Y0.0000 Z0.0000 F50.0000"}));
+TEST(Motion, G53PositionsAtRapidUnderModalG1) {
+    EXPECT_EQ(texts("G1 X5 F50\nG53 X1\nX2\n"),
+              (Texts{"G1 X5.0000 Y0.0000 Z0.0000 F50.0000", "G0 X1.0000 Y0.0000 Z0.0000",
+                     "G1 X2.0000 Y0.0000 Z0.0000 F50.0000"}));
 }
 
 TEST(Motion, G28WithoutAxisWordsSendsEveryAxisHome) {

@@ -93,7 +93,7 @@ TEST(MCodes, LeadingZerosAreTheSameCode) { EXPECT_EQ(events("M03 S100\nM08\n"), 
 
 TEST(Order, SpeedToolSpindleCoolantBeforeMotionAndStopAfter) {
     EXPECT_EQ(events("G1 X10 F100 M8 S500 T2 M3 M30\n"),
-              (Texts{"S rpm=500", "T2", "M8", "M3 rpm=500", "G1 X10.0000 Y0.0000 Z0.0000 F100.0000", "M30 waits"}));
+              (Texts{"S rpm=500", "T2", "M3 rpm=500", "M8", "G1 X10.0000 Y0.0000 Z0.0000 F100.0000", "M30 waits"}));
 }
 
 TEST(Order, DwellComesAfterSpeedAndMCodes) {
@@ -143,7 +143,7 @@ TEST(FeedMode, G95WithoutSpindleSpeedHasNoFeedPerMinute) {
 }
 
 TEST(FeedMode, G95InInchIsInchesPerRevolution) {
-    EXPECT_DOUBLE_EQ(the<Line>("G20 G95 S100 G1 Z-1 F0.01\n", lathe()).feed.mm_per_rev, 0.254);
+    EXPECT_DOUBLE_EQ(the<Line>("G20\nG95 S100 G1 Z-1 F0.01\n", lathe()).feed.mm_per_rev, 0.254);
 }
 
 TEST(FeedMode, G94SwitchesBack) {

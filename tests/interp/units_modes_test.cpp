@@ -16,7 +16,12 @@ MachineConfig least_increment_mill() {
 // ---- G20 / G21 ----------------------------------------------------------------------------
 
 TEST(Units, G20ConvertsAxesAndFeed) {
-    EXPECT_EQ(texts("G20 G1 X1 Y-2 Z0.5 F10\n"), (Texts{"G1 X25.4000 Y-50.8000 Z12.7000 F254.0000"}));
+    EXPECT_EQ(texts("G20\nG1 X1 Y-2 Z0.5 F10\n"), (Texts{"G1 X25.4000 Y-50.8000 Z12.7000 F254.0000"}));
+    // F beside a G20/G21 that changes the units is refused (never a silent factor of 25.4);
+    // beside one that changes nothing it is fine.
+    EXPECT_EQ(error_where("G20 G1 X1 F10\n"), "bad-combination 1:11");
+    EXPECT_EQ(error_where("G20\nG21 F10 G1 X1\n"), "bad-combination 2:5");
+    EXPECT_EQ(texts("G21 G1 X1 F10\n"), (Texts{"G1 X1.0000 Y0.0000 Z0.0000 F10.0000"}));
 }
 
 TEST(Units, G21SwitchesBack) {
@@ -24,12 +29,12 @@ TEST(Units, G21SwitchesBack) {
 }
 
 TEST(Units, FeedKeepsItsMillimetresAcrossAUnitChange) {
-    EXPECT_EQ(texts("G20 G1 X1 F10\nG21 X2\n"),
+    EXPECT_EQ(texts("G20\nG1 X1 F10\nG21 X2\n"),
               (Texts{"G1 X25.4000 Y0.0000 Z0.0000 F254.0000", "G1 X2.0000 Y0.0000 Z0.0000 F254.0000"}));
 }
 
 TEST(Units, G20InTheSameBlockAppliesToItsWords) {
-    EXPECT_EQ(texts("G1 F100 X1 G20\n"), (Texts{"G1 X25.4000 Y0.0000 Z0.0000 F2540.0000"}));
+    EXPECT_EQ(texts("F100\nG1 X1 G20\n"), (Texts{"G1 X25.4000 Y0.0000 Z0.0000 F100.0000"}));
 }
 
 TEST(Units, G20ConvertsArcOffsetsAndRadius) {
@@ -38,7 +43,7 @@ TEST(Units, G20ConvertsArcOffsetsAndRadius) {
     EXPECT_DOUBLE_EQ(ij.to[Axis::X], -25.4);
     EXPECT_NEAR(ij.center[Axis::X], 0.0, 1e-12);
     EXPECT_DOUBLE_EQ(ij.feed.mm_per_min, 254.0);
-    Arc r = the<Arc>("G20 G2 X2 R1 F10\n");
+    Arc r = the<Arc>("G20\nG2 X2 R1 F10\n");
     EXPECT_NEAR(r.center[Axis::X], 25.4, 1e-12);
     EXPECT_NEAR(r.center[Axis::Y], 0.0, 1e-12);
 }

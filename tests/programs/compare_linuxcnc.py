@@ -24,7 +24,10 @@ How rs274's output is read (LinuxCNC 2.9):
 Comments in a program's first 5 lines can set up the run:
 - `( nckit-machine: lathe.toml )`: the nckit machine file, resolved against examples/machines/;
 - `( nckit-block-delete: on )`: skip `/` blocks (rs274 -b, nckit --block-delete); both skip
-  nothing by default.
+  nothing by default;
+- `( nckit-tools: tool.tbl )`: a LinuxCNC tool table in mm beside the program: nckit gets
+  `--tools` with it, rs274 `-t` with a copy scaled by 1/25.4 (standalone rs274 reads its tool
+  table as inches whatever the program's units). USE_TOOL_LENGTH_OFFSET then adds to Z.
 
 Expand mode (`--expand`), for programs rs274 cannot read (Fanuc Custom Macro B: `NN_name.nc` as
 well as `NN_name.ngc`): `nckit expand PROGRAM -o expanded.ngc` writes the program out as plain
@@ -84,7 +87,7 @@ DEFAULT_MILL = {"axes": {"X": (-500.0, 500.0), "Y": (-500.0, 500.0), "Z": (-500.
                 "diameter_mode": False}
 
 CALL_RE = re.compile(r"^\s*\d+\s+N(\S*)\s+([A-Z_][A-Z0-9_]*)\((.*)\)\s*$")
-DIRECTIVE_RE = re.compile(r"nckit-(machine|block-delete)\s*:\s*([^\s)]+)", re.IGNORECASE)
+DIRECTIVE_RE = re.compile(r"nckit-(machine|block-delete|tools)\s*:\s*([^\s)]+)", re.IGNORECASE)
 
 
 class ProgramError(Exception):
@@ -169,6 +172,7 @@ def load_machine(path: Path) -> dict:
 class Setup:
     machine_file: Path | None = None   # None: nckit's built-in mill
     block_delete: bool = False
+    tools_file: Path | None = None     # a tool.tbl in mm beside the program
 
 
 def setup_of(program: Path, machines_dir: Path) -> Setup:
@@ -179,6 +183,8 @@ def setup_of(program: Path, machines_dir: Path) -> Setup:
             for key, value in DIRECTIVE_RE.findall(text):
                 if key.lower() == "machine":
                     setup.machine_file = machines_dir / value
+                elif key.lower() == "tools":
+                    setup.tools_file = program.parent / value
                 elif value.lower() in ("on", "off"):
                     setup.block_delete = value.lower() == "on"
                 else:
@@ -230,6 +236,23 @@ def tool_table_for(program: Path, workdir: Path) -> Path:
     return path
 
 
+def inch_tool_table(path: Path, workdir: Path) -> Path:
+    """A copy of a mm tool.tbl with every length (X Y Z ... D) divided by 25.4, for rs274."""
+    rows = []
+    for text in path.read_text().splitlines():
+        body, _, comment = text.partition(";")
+        words = []
+        for word in body.split():
+            letter, value = word[0].upper(), word[1:]
+            if letter in "XYZABCUVWD":
+                value = repr(float(value) / 25.4)
+            words.append(letter + value)
+        rows.append(" ".join(words) + (" ;" + comment if comment else ""))
+    out = workdir / "tools_inch.tbl"
+    out.write_text("\n".join(rows) + "\n")
+    return out
+
+
 def run_rs274(rs274: str, program: Path, block_delete: bool, workdir: Path,
               timeout: float, tool_table: Path | None = None) -> str:
     """rs274's canonical calls for a program. It runs in a scratch folder because it rewrites its
@@ -264,6 +287,7 @@ def parse_rs274(output: str, diameter_machine: bool, radius_program: bool = Fals
     g92 = {a: 0.0 for a in ALL_AXES}
     g5x_q = {a: 0.0 for a in ALL_AXES}            # printing resolution of the offset, mm
     g92_q = {a: 0.0 for a in ALL_AXES}
+    tlo = {a: 0.0 for a in ALL_AXES}              # tool length offset, mm
     plane = PLANES["CANON_PLANE_XY"]
     line: int | None = None
     diameter = False
@@ -276,7 +300,7 @@ def parse_rs274(output: str, diameter_machine: bool, radius_program: bool = Fals
         return v if axis in ROTARY else v * scale
 
     def machine(axis: str, v: float) -> float:
-        return to_mm(axis, v) + g5x[axis] + g92[axis]
+        return to_mm(axis, v) + g5x[axis] + g92[axis] + tlo[axis]
 
     def tolerance(axis: str) -> float:
         q = PRINT_HALF_ULP * (1.0 if axis in ROTARY else scale) + g5x_q[axis] + g92_q[axis]
@@ -331,8 +355,9 @@ def parse_rs274(output: str, diameter_machine: bool, radius_program: bool = Fals
                 raise ProgramError(f"coordinate system rotation is not compared: {where}")
         elif call == "USE_TOOL_LENGTH_OFFSET":
             # LinuxCNC 2.9 prints it as three space-separated triples: "x y z, a b c, u v w".
-            if any(v != 0 for v in _numbers(",".join(args.replace(",", " ").split()), call, 3)):
-                raise ProgramError(f"tool length offsets are not compared: {where}")
+            values = _numbers(",".join(args.replace(",", " ").split()), call, 9)
+            for axis, v in zip("XYZABCUVW", values):
+                tlo[axis] = to_mm(axis, v)
         elif call in UNSUPPORTED_CALLS:
             raise ProgramError(f"motion not compared: {where}")
         elif call in ("STRAIGHT_TRAVERSE", "STRAIGHT_FEED", "ARC_FEED"):
@@ -428,6 +453,8 @@ def run_nckit(nckit: str, program: Path, setup: Setup, workdir: Path,
         cmd += ["--machine", str(setup.machine_file)]
     if setup.block_delete:
         cmd.append("--block-delete")
+    if setup.tools_file is not None:
+        cmd += ["--tools", str(setup.tools_file)]
     cmd += extra or []
     proc = subprocess.run(cmd, cwd=workdir, stdin=subprocess.DEVNULL, capture_output=True,
                           text=True, timeout=timeout)
@@ -559,11 +586,15 @@ def reference(program: Path, rs274: str, machines_dir: Path, workdir: Path,
         raise ProgramError(f"machine file {setup.machine_file} does not exist")
     machine = load_machine(setup.machine_file) if setup.machine_file else DEFAULT_MILL
     table = tool_table_for(program, workdir) if tools else None
+    if setup.tools_file is not None:
+        table = inch_tool_table(setup.tools_file, workdir)
     plain = run_rs274(rs274, program, block_delete, workdir, timeout, table)
     tagged_path = workdir / ("tagged_" + program.name)
     tagged_path.write_text(annotate(program.read_text(encoding="utf-8", errors="replace")))
-    if table is not None:
-        table = tool_table_for(program, workdir)  # rs274 rewrites its tool table at exit
+    if setup.tools_file is not None:
+        table = inch_tool_table(setup.tools_file, workdir)  # rs274 rewrites its tool table at exit
+    elif table is not None:
+        table = tool_table_for(program, workdir)
     tagged = run_rs274(rs274, tagged_path, block_delete, workdir, timeout, table)
     motions = parse_rs274(tagged, machine["diameter_mode"], radius_program)
     untagged = parse_rs274(plain, machine["diameter_mode"], radius_program)

@@ -9,6 +9,7 @@
 
 #include "nckit/core/axes.hpp"
 #include "nckit/core/result.hpp"
+#include "nckit/core/tool_table.hpp"
 
 namespace nckit {
 
@@ -56,6 +57,8 @@ struct AxisConfig {
     double backlash = 0;          //!< mm (deg) lost on each reversal
     double backlash_rate_steps_s = 20000;  //!< steps/s at which a reversal's backlash is taken up
     double home = 0;              //!< reference point G28 returns to, machine coordinates
+    //! Where M6 takes this axis (rapid, machine coordinates) before the change; none: it stays.
+    std::optional<double> tool_change;
     PhaseTableKind phase_table = PhaseTableKind::none;  //!< windings sequenced by the drive
     bool port_active_low = false;    //!< phase-table port: winding bits inverted (sinking drivers)
     std::uint8_t port_set_bits = 0;  //!< phase-table port: bits always written high (e.g. enable)
@@ -86,6 +89,9 @@ struct MachineConfig {
     ProfileKind profile = ProfileKind::scurve;
     std::vector<AxisConfig> axes;   //!< in the order the config lists them
     SpindleConfig spindle;
+    //! The tool table (`tools = "FILE"` in [machine], or `--tools FILE`); empty when none given.
+    ToolTable tools;
+    std::string tools_file;         //!< where `tools` came from; empty for none
 
     //! The configured axis, or null when the machine has no such axis.
     [[nodiscard]] const AxisConfig* find(Axis axis) const;

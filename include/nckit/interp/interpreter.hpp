@@ -17,9 +17,13 @@ struct InterpreterOptions {
     //! The operator's block delete switch: when on, blocks that start with '/' are skipped.
     //! Off by default, as on a Fanuc control at power-on and in LinuxCNC's rs274.
     bool block_delete = false;
-    //! An arc whose end lies off its circle by more than this (and by more than 0.1 % of the
-    //! radius) is an error, as in LinuxCNC.
-    double arc_radius_tolerance_mm = 0.01;
+    //! An I/J/K arc whose end radius differs from its start radius by more than this and by
+    //! more than 0.1 %, or by more than 100 times this, is an error: LinuxCNC 2.9's rule and
+    //! value (0.02·√2 mm; under G20 its inch value 0.002·√2 in, 2.54 times this).
+    double arc_radius_tolerance_mm = 0.028284271247461905;
+    //! An R arc whose radius falls short of half its chord by up to this is a half circle; by
+    //! more it is an error (LinuxCNC: 0.00005 in = 0.00127 mm in either unit).
+    double r_arc_tolerance_mm = 0.00127;
     //! Where M98/G65 find programs that are not in the program's own file: one file per program,
     //! named by its number (`O1234.nc`, `1234.ngc`, `O1234`), as in a control's memory.
     std::filesystem::path library_dir;
