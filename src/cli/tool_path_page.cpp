@@ -42,7 +42,9 @@ std::optional<ToolPathSection> plan_tool_path(const std::string& program, const 
     // A report looks at a run; it keeps #500-#999 as they were, as `nckit check` does.
     auto interpreter = open_program_or_report(program, machine, false);
     if (!interpreter) return std::nullopt;
-    return record(*interpreter, options, nullptr);
+    ToolPathOptions with_program = options;
+    with_program.first_file = program;
+    return record(*interpreter, with_program, nullptr);
 }
 
 std::optional<ToolPathSection> plan_tool_path_text(const std::string& text, const std::string& name,
@@ -50,7 +52,9 @@ std::optional<ToolPathSection> plan_tool_path_text(const std::string& text, cons
     InterpreterOptions interpreter_options;
     interpreter_options.save_retained = false;
     Interpreter interpreter(machine, ProgramSource::from_string(text, name), interpreter_options);
-    return record(interpreter, options, &text);
+    ToolPathOptions with_program = options;
+    with_program.first_file = name;
+    return record(interpreter, with_program, &text);
 }
 
 bool write_page(const ReportPage& page, const std::string& path) {

@@ -33,6 +33,7 @@ struct ToolPathRecorder::Impl {
     double speed_tolerance_mm_s = 0;
     ToolPathReport report;
     std::map<const std::string*, std::uint32_t> file_index;
+    bool first_file_seen = false;       //!< a move of options.first_file has come
     std::deque<std::size_t> awaiting;   //!< moves with length, waiting for their piece
     std::vector<bool> exact_stop;       //!< per move: G61/G9 at its end
     std::size_t finalized = 0;          //!< moves before this have their vertices and times
@@ -48,11 +49,19 @@ struct ToolPathRecorder::Impl {
         for (const AxisConfig& axis : machine.axes) top = std::max(top, axis.max_velocity);
         speed_tolerance_mm_s = options.speed_tolerance * top;
         report.tolerance_mm = options.tolerance_mm;
+        if (!options.first_file.empty()) report.files.push_back(options.first_file);
     }
 
     std::uint32_t file_of(const SourceLocation& where) {
         auto [it, added] = file_index.try_emplace(where.file.get(), static_cast<std::uint32_t>(report.files.size()));
-        if (added) report.files.push_back(where.file_name());
+        if (added) {
+            if (!first_file_seen && !options.first_file.empty() && where.file_name() == options.first_file) {
+                it->second = 0;  // the program's own file, named up front
+                first_file_seen = true;
+            } else {
+                report.files.push_back(where.file_name());
+            }
+        }
         return it->second;
     }
 

@@ -2,6 +2,7 @@
 // limits drawn as dashed lines, and generic x–y charts for the process pages.
 import uPlot from "uplot";
 import { axisColors } from "./colors.js";
+import { scalePlot } from "./scale_plot.js";
 
 function chartBox(parent, title) {
   const box = document.createElement("div");
@@ -81,6 +82,7 @@ export function speedChart(parent, samples) {
 //! "mode 2" data, each series with its own x array).
 export function xyChart(parent, chart, blob) {
   const box = chartBox(parent, chart.title);
+  if (chart.equal_axes) return scalePlot(box, chart, blob, width(parent));
   const data = [null];
   const series = [{}];
   let xmin = Infinity, xmax = -Infinity, ymin = Infinity, ymax = -Infinity;

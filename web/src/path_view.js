@@ -2,6 +2,9 @@
 // the tool, picking by mouse. Renders only when something changed.
 import * as THREE from "three";
 import { OrbitControls } from "three/addons/controls/OrbitControls.js";
+import { Line2 } from "three/addons/lines/Line2.js";
+import { LineGeometry } from "three/addons/lines/LineGeometry.js";
+import { LineMaterial } from "three/addons/lines/LineMaterial.js";
 import { speedColor } from "./colors.js";
 
 const RAPID = 0;
@@ -97,10 +100,10 @@ export function createPathView(container, path, onPick) {
   points.userData.moveOf = Uint32Array.from(pointMoves);
   scene.add(points);
 
-  const highlight = new THREE.Line(
-    new THREE.BufferGeometry(),
-    new THREE.LineBasicMaterial({ color: 0xff00ff, depthTest: false }),
-  );
+  // The selected move, 4 px wide over everything (WebGL draws plain lines 1 px wide).
+  const highlightMaterial = new LineMaterial({ color: 0xff00ff, linewidth: 4, depthTest: false });
+  const highlight = new Line2(new LineGeometry(), highlightMaterial);
+  highlight.visible = false;
   highlight.renderOrder = 2;
   scene.add(highlight);
   const tool = new THREE.Mesh(
@@ -145,6 +148,7 @@ export function createPathView(container, path, onPick) {
     renderer.domElement.style.width = w + "px";
     renderer.domElement.style.height = h + "px";
     camera.aspect = w / h;
+    highlightMaterial.resolution.set(w, h);
     camera.updateProjectionMatrix();
     renderNow();
   }
@@ -188,11 +192,16 @@ export function createPathView(container, path, onPick) {
       return;
     }
     const [a, b] = moveRange(m);
-    const pos = new Float32Array((b - a + 1) * 3);
-    for (let v = a; v <= b; v++) for (let k = 0; k < 3; k++) pos[3 * (v - a) + k] = vertexCount ? xyz[3 * v + k] - centre[k] : 0;
+    // A move that goes nowhere is shown as a short stub so it can be seen at all.
+    const count = Math.max(2, b - a + 1);
+    const pos = new Float32Array(count * 3);
+    for (let i = 0; i < count; i++) {
+      const v = Math.min(a + i, b);
+      for (let k = 0; k < 3; k++) pos[3 * i + k] = (vertexCount ? xyz[3 * v + k] - centre[k] : 0) + (b === a && i === 1 && k === 0 ? size / 200 : 0);
+    }
     highlight.geometry.dispose();
-    highlight.geometry = new THREE.BufferGeometry();
-    highlight.geometry.setAttribute("position", new THREE.BufferAttribute(pos, 3));
+    highlight.geometry = new LineGeometry();
+    highlight.geometry.setPositions(pos);
     highlight.visible = true;
     render();
   }
@@ -202,7 +211,31 @@ export function createPathView(container, path, onPick) {
     render();
   }
 
-  //! Page coordinates of the middle of a move's drawn polyline (for tests and for scrolling).
+  function project(v) {
+    const p = new THREE.Vector3(xyz[3 * v] - centre[0], xyz[3 * v + 1] - centre[1], xyz[3 * v + 2] - centre[2]).project(camera);
+    const rect = renderer.domElement.getBoundingClientRect();
+    return [rect.left + ((p.x + 1) / 2) * rect.width, rect.top + ((1 - p.y) / 2) * rect.height];
+  }
+
+  //! Pixels from the point (client coordinates) to the move's drawn polyline.
+  function distanceToMove(m, x, y) {
+    const [a, b] = moveRange(m);
+    if (!vertexCount) return Infinity;
+    let best = Infinity;
+    let p = project(a);
+    if (a === b) return Math.hypot(p[0] - x, p[1] - y);
+    for (let v = a + 1; v <= b; v++) {
+      const q = project(v);
+      const dx = q[0] - p[0], dy = q[1] - p[1];
+      const len2 = dx * dx + dy * dy;
+      const t = len2 > 0 ? Math.min(1, Math.max(0, ((x - p[0]) * dx + (y - p[1]) * dy) / len2)) : 0;
+      best = Math.min(best, Math.hypot(p[0] + t * dx - x, p[1] + t * dy - y));
+      p = q;
+    }
+    return best;
+  }
+
+  //! Client coordinates of the middle of a move's drawn polyline (for tests and for scrolling).
   function screenPoint(m) {
     const [a, b] = moveRange(m);
     const v = Math.floor((a + b) / 2);
@@ -214,11 +247,11 @@ export function createPathView(container, path, onPick) {
     }
     p.project(camera);
     const rect = renderer.domElement.getBoundingClientRect();
-    return { x: rect.left + ((p.x + 1) / 2) * rect.width + window.scrollX, y: rect.top + ((1 - p.y) / 2) * rect.height + window.scrollY };
+    return { x: rect.left + ((p.x + 1) / 2) * rect.width, y: rect.top + ((1 - p.y) / 2) * rect.height };
   }
 
   let drawnCount = 0;
   for (let m = 0; m < moveCount; m++) drawnCount += drawn[m];
   resize();
-  return { select, placeTool, screenPoint, pick, drawnSegments: drawnCount, canvas: renderer.domElement, render: renderNow };
+  return { select, placeTool, screenPoint, distanceToMove, pick, drawnSegments: drawnCount, canvas: renderer.domElement, render: renderNow };
 }

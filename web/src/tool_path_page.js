@@ -187,6 +187,7 @@ export function buildToolPathPage(root, header, blob) {
     sliderTime: 0,
     cycleTimeText: () => document.getElementById("cycle-time").textContent,
     segmentScreenPoint: (m) => path.screenPoint(m),
+    distanceToMove: (m, x, y) => path.distanceToMove(m, x, y),
     setSlider: (i) => setTime(i, false),
     samplePeriod: tp.samples.period_s,
     lineOfMove: (m) => [moveFile[m], moveLine[m]],

@@ -45,6 +45,9 @@ struct ToolPathOptions {
     double speed_tolerance = 0.02;    //!< fraction of the top speed
     double arc_step_deg = 5;          //!< at most this sweep between points of an arc
     std::size_t max_samples = 8192;   //!< time samples kept: between this and twice this
+    //! The program's own file, listed first (before called programs) even if its first move
+    //! comes from a called one; empty: files in the order their first moves come.
+    std::string first_file;
 };
 
 struct ToolPathReport {
