@@ -22,8 +22,18 @@ function decodeDelta(bytes, count, scale) {
 }
 
 export async function loadPayload(base64Text) {
-  const response = await fetch("data:application/octet-stream;base64," + base64Text.trim());
-  const unpacked = response.body.pipeThrough(new DecompressionStream("gzip"));
+  // Uint8Array.fromBase64 where the browser has it (Chromium 140 on), else atob; both far
+  // faster than fetching a data: URL of the same text.
+  const text = base64Text.trim();
+  let packed;
+  if (typeof Uint8Array.fromBase64 === "function") {
+    packed = Uint8Array.fromBase64(text);
+  } else {
+    const binary = atob(text);
+    packed = new Uint8Array(binary.length);
+    for (let i = 0; i < binary.length; i++) packed[i] = binary.charCodeAt(i);
+  }
+  const unpacked = new Blob([packed]).stream().pipeThrough(new DecompressionStream("gzip"));
   const buffer = await new Response(unpacked).arrayBuffer();
   const headerLength = new DataView(buffer).getUint32(0, true);
   const header = JSON.parse(new TextDecoder().decode(new Uint8Array(buffer, 4, headerLength)));

@@ -11,6 +11,13 @@ const KINDS = ["rapid", "feed", "arc", "thread"];
 const SLOWDOWNS = ["", "corner", "arc limit", "short segment", "exact stop", "axis limit"];
 
 export function buildToolPathPage(root, header, blob) {
+  const timings = {};
+  let mark = performance.now();
+  const lap = (name) => {
+    const now = performance.now();
+    timings[name] = Math.round(now - mark);
+    mark = now;
+  };
   const tp = header.tool_path;
   const moveKind = blob("move_kind");
   const moveLine = blob("move_line");
@@ -33,6 +40,7 @@ export function buildToolPathPage(root, header, blob) {
   }
   const sources = tp.files.map((_, i) => blob("source_" + i));
   const moveCount = moveKind.length;
+  lap("unpack");
 
   // First move of each source line, per file.
   const firstMove = tp.files.map(() => new Map());
@@ -69,11 +77,15 @@ export function buildToolPathPage(root, header, blob) {
     `<div class="legend-note">dashed grey: rapids · magenta: selected move · black dot: the tool at the slider's time</div>`;
 
   let selected = -1;
+  lap("figures");
   const path = createPathView(view3d, { moveKind, vertexEnd, xyz, speed, hasY: axes.includes("Y") }, (m) => select(m, true));
+  lap("path");
   const code = createCodePane(codeBox, tp.files, sources, (file, line) => {
     const m = firstMove[file].get(line);
     select(m === undefined ? -1 : m, false, [file, line]);
   });
+
+  lap("code");
 
   function select(m, fromPath, lineOnly) {
     selected = m;
@@ -173,13 +185,16 @@ export function buildToolPathPage(root, header, blob) {
   peakBox.appendChild(pt);
   root.appendChild(peakBox);
 
+  lap("tables");
   const chartBox = el("section", "charts");
   chartBox.appendChild(el("h2", null, "Planned motion against time"));
   root.appendChild(chartBox);
   speedChart(chartBox, samples);
   axisCharts(chartBox, samples, axes, tp.machine.axes, (i) => setTime(i, false));
 
+  lap("charts");
   const state = {
+    timings,
     moves: moveCount,
     drawnSegments: path.drawnSegments,
     selectedMove: -1,

@@ -21,6 +21,7 @@ try {
       moves: window.nckitReport.moves,
       drawnSegments: window.nckitReport.drawnSegments,
       buildMs: Math.round(window.nckitReport.buildMs),
+      timings: window.nckitReport.timings,
     }));
     // A click on the path is answered (picking over every drawn segment).
     const t0 = Date.now();
