@@ -42,9 +42,14 @@ export function buildToolPathPage(root, header, blob) {
   const moveCount = moveKind.length;
   lap("unpack");
 
-  // First move of each source line, per file.
-  const firstMove = tp.files.map(() => new Map());
-  for (let m = moveCount - 1; m >= 0; m--) firstMove[moveFile[m]].set(moveLine[m], m);
+  // First move of each source line, per file: an array indexed by line (-1: no move).
+  const lineCount = tp.files.map((_, i) => 0);
+  for (let m = 0; m < moveCount; m++) if (moveLine[m] > lineCount[moveFile[m]]) lineCount[moveFile[m]] = moveLine[m];
+  const firstMoveOfLine = lineCount.map((n) => new Int32Array(n + 1).fill(-1));
+  for (let m = moveCount - 1; m >= 0; m--) firstMoveOfLine[moveFile[m]][moveLine[m]] = m;
+  const firstMove = firstMoveOfLine.map((table) => ({
+    get: (line) => (line < table.length && table[line] >= 0 ? table[line] : undefined),
+  }));
 
   const figures = [
     ["cycle time", `<span id="cycle-time" data-seconds="${tp.cycle_time_s}">${tp.cycle_time_s.toFixed(6)}</span> s`],
