@@ -84,9 +84,9 @@ async function testPage(browser, spec) {
       check(got.move >= 0 && got.px <= 6 && got.marked === got.own,
         `click on move ${m + 1}: picks move ${got.move + 1}, drawn ${got.px.toFixed(1)} px from the pointer; the code pane marks its line ${got.marked}`);
     }
-    // On a dense page (tens of thousands of moves in a few hundred pixels) every pixel holds
+    // On a dense page (thousands of moves in a few hundred pixels) every pixel holds
     // several moves: any of them is a right answer, checked above.
-    check(clicked >= 3 && (exact >= 1 || state.moves > 10000), `${clicked} moves clicked, ${exact} picked exactly (the others overlap on screen)`);
+    check(clicked >= 3 && (exact >= 1 || state.moves > 2000), `${clicked} moves clicked, ${exact} picked exactly (the others overlap on screen)`);
 
     // Click lines in the code pane: the line's first move is selected and drawn in magenta.
     for (const m of candidates.slice(0, 3)) {
