@@ -73,8 +73,14 @@ TEST(ToolPathRecorder, EveryMoveKeepsItsLineAndTimesFollowThePlan) {
     // "G1 X20" to where the tool stands goes nowhere: a point, no vertex of its own.
     EXPECT_EQ(r.report.moves[3].vertex_end, r.report.moves[2].vertex_end);
     EXPECT_EQ(r.report.moves[4].kind, ReportMoveKind::arc);
-    // The arc is drawn with points at most 5° apart: a quarter turn needs at least 18 chords.
-    EXPECT_GE(r.report.moves[4].vertex_end - r.report.moves[3].vertex_end, 18U);
+    // The arc is drawn as an arc: several points, all on its circle (the planner's jerk-limited
+    // join from the line eases into it within a few hundredths of a mm).
+    EXPECT_GE(r.report.moves[4].vertex_end - r.report.moves[3].vertex_end, 5U);
+    for (std::uint32_t v = r.report.moves[3].vertex_end + 1; v <= r.report.moves[4].vertex_end; ++v) {
+        // Past Y10 the move's end eases into the next line (the join belongs to the move's end).
+        const ReportVertex& p = r.report.vertices[v];
+        if (p.y_mm <= 10) EXPECT_NEAR(std::hypot(p.x_mm - 20, p.y_mm - 10), 10, 0.03);
+    }
     const ReportVertex& last = r.report.vertices.back();
     EXPECT_NEAR(last.x_mm, 0, 1e-9);
     EXPECT_NEAR(last.y_mm, 0, 1e-9);
