@@ -12,13 +12,13 @@ namespace nckit::cli {
 namespace {
 
 std::optional<ToolPathSection> record(Interpreter& interpreter, const ToolPathOptions& options,
-                                      const std::string* text_of_first_file) {
+                                      const std::string* text_of_first_file, ProgramProgress* progress) {
     const MachineConfig& config = interpreter.machine();
     Planner planner(config);
     ToolPathRecorder recorder(config, config.profile, options);
     if (!plan_program(
             interpreter, planner, [&](const TrajectoryPiece& piece) { recorder.add_piece(piece); },
-            [&](const Move& move) { recorder.add_move(move); })) {
+            [&](const Move& move) { recorder.add_move(move); }, progress)) {
         return std::nullopt;
     }
     ToolPathSection section{recorder.finish(), config, {}};
@@ -44,7 +44,11 @@ std::optional<ToolPathSection> plan_tool_path(const std::string& program, const 
     if (!interpreter) return std::nullopt;
     ToolPathOptions with_program = options;
     with_program.first_file = program;
-    return record(*interpreter, with_program, nullptr);
+    // Blocks done, rate and time left on stderr when it is a terminal (--quiet silences it).
+    ProgramProgress progress("report", program, machine.quiet);
+    auto section = record(*interpreter, with_program, nullptr, &progress);
+    progress.finish();
+    return section;
 }
 
 std::optional<ToolPathSection> plan_tool_path_text(const std::string& text, const std::string& name,
@@ -54,7 +58,7 @@ std::optional<ToolPathSection> plan_tool_path_text(const std::string& text, cons
     Interpreter interpreter(machine, ProgramSource::from_string(text, name), interpreter_options);
     ToolPathOptions with_program = options;
     with_program.first_file = name;
-    return record(interpreter, with_program, &text);
+    return record(interpreter, with_program, &text, nullptr);
 }
 
 bool write_page(const ReportPage& page, const std::string& path) {
