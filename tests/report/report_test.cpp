@@ -79,7 +79,9 @@ TEST(ToolPathRecorder, EveryMoveKeepsItsLineAndTimesFollowThePlan) {
     for (std::uint32_t v = r.report.moves[3].vertex_end + 1; v <= r.report.moves[4].vertex_end; ++v) {
         // Past Y10 the move's end eases into the next line (the join belongs to the move's end).
         const ReportVertex& p = r.report.vertices[v];
-        if (p.y_mm <= 10) EXPECT_NEAR(std::hypot(p.x_mm - 20, p.y_mm - 10), 10, 0.03);
+        if (p.y_mm <= 10) {
+            EXPECT_NEAR(std::hypot(p.x_mm - 20, p.y_mm - 10), 10, 0.03);
+        }
     }
     const ReportVertex& last = r.report.vertices.back();
     EXPECT_NEAR(last.x_mm, 0, 1e-9);
