@@ -20,12 +20,16 @@ groups[build]="
   libdxflib-dev
   nlohmann-json3-dev
   libgtest-dev libgmock-dev
+  # zlib compresses the data inside nckit report's HTML pages.
+  zlib1g-dev
 "
 # The CLI and program tests (python3) and GNU time (peak memory in the streaming tests and
 # bench/throughput_vs_linuxcnc.sh).
 groups[test]="
   python3
   time
+  # The report pages' browser test runs Debian's chromium headless (through puppeteer-core).
+  chromium fonts-dejavu-core
 "
 # Google Benchmark for bench/.
 groups[bench]="
@@ -63,14 +67,27 @@ for group in "${wanted[@]}"; do
   done
 done
 
-if ((${#missing[@]} == 0)); then
-  exit 0
+# node and npm bundle the report viewer (web/) at build time; a machine that has node from
+# elsewhere keeps it.
+if ! command -v node >/dev/null || ! command -v npm >/dev/null; then missing+=(nodejs npm); fi
+
+if ((${#missing[@]} > 0)); then
+  echo "deps: installing ${missing[*]}"
+  sudo_cmd=()
+  if [[ $(id -u) -ne 0 ]]; then sudo_cmd=(sudo); fi
+  export DEBIAN_FRONTEND=noninteractive
+  "${sudo_cmd[@]}" apt-get update
+  # apt's own progress: LinuxCNC alone is a few hundred MB.
+  "${sudo_cmd[@]}" apt-get install -y --no-install-recommends -o Dpkg::Progress-Fancy=1 "${missing[@]}"
 fi
 
-echo "deps: installing ${missing[*]}"
-sudo_cmd=()
-if [[ $(id -u) -ne 0 ]]; then sudo_cmd=(sudo); fi
-export DEBIAN_FRONTEND=noninteractive
-"${sudo_cmd[@]}" apt-get update
-# apt's own progress: LinuxCNC alone is a few hundred MB.
-"${sudo_cmd[@]}" apt-get install -y --no-install-recommends -o Dpkg::Progress-Fancy=1 "${missing[@]}"
+# The viewer's npm packages, exactly as web/package-lock.json pins them: three and uplot (in the
+# page), esbuild (bundles it at build time), puppeteer-core and pngjs (the browser test drives
+# Debian's chromium; puppeteer-core never downloads a browser, and PUPPETEER_SKIP_DOWNLOAD makes
+# sure nothing else does). Skipped when node_modules matches the lockfile already.
+web="$(cd "$(dirname "${BASH_SOURCE[0]}")/../web" && pwd)"
+stamp="$web/node_modules/.package-lock.json"
+if [[ ! -f "$stamp" || "$web/package-lock.json" -nt "$stamp" ]]; then
+  echo "deps: npm ci in web/"
+  (cd "$web" && PUPPETEER_SKIP_DOWNLOAD=1 npm ci --no-audit --no-fund --loglevel=error)
+fi

@@ -12,6 +12,8 @@
 #include <fmt/format.h>
 
 #include "common.hpp"
+#include "nckit/report/process_pages.hpp"
+#include "tool_path_page.hpp"
 #include "partial_file.hpp"
 #include "step_record.hpp"
 #include "nckit/process/crosshatch.hpp"
@@ -29,6 +31,7 @@ struct CrosshatchOptions {
     std::string gcode;
     std::string steps;
     bool text = false;
+    std::string html;
 };
 
 std::string timing_name(CrosshatchTiming timing) {
@@ -125,6 +128,7 @@ int run_crosshatch(const CrosshatchOptions& options) {
     if (!options.gcode.empty() && !write_file(options.gcode, crosshatch_gcode(*plan, name))) return exit_bad_input;
     if (!options.svg.empty() && !write_file(options.svg, crosshatch_svg(*plan, scan))) return exit_bad_input;
     if (!options.steps.empty() && !write_steps(options, *plan)) return exit_bad_input;
+    if (!options.html.empty() && !write_page(crosshatch_page(*plan, scan, name), options.html)) return exit_bad_input;
     if (options.json) {
         print_json(*plan, scan);
     } else {
@@ -141,6 +145,7 @@ void add_crosshatch_verb(CLI::App& app, int& exit_status) {
     verb->add_option("JOB", options->job, "job file (TOML, table [crosshatch])")->required();
     verb->add_flag("--json", options->json, "print the report as JSON");
     verb->add_option("--svg", options->svg, "draw the unrolled bore with the laser tracks (SVG)");
+    verb->add_option("--html", options->html, "write an interactive page: the unrolled net, speeds, divisors (HTML)");
     verb->add_option("-o,--output", options->gcode, "write the scan as G-code (Z and a rotary A axis)");
     CLI::Option* steps = verb->add_option("--steps", options->steps, "write both motors' step streams (axis 0 feed, 1 rotation)");
     verb->add_flag("--text", options->text, "--steps as text: t_ns axis dir port")->needs(steps);

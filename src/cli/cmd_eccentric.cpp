@@ -10,6 +10,8 @@
 #include <fmt/format.h>
 
 #include "common.hpp"
+#include "nckit/report/process_pages.hpp"
+#include "tool_path_page.hpp"
 #include "partial_file.hpp"
 #include "nckit/process/eccentric.hpp"
 #include "verbs.hpp"
@@ -23,6 +25,7 @@ struct EccentricOptions {
     std::string machine;
     bool json = false;
     std::string cam_table;
+    std::string html;
 };
 
 //! A JSON number, or null for a limit the axis does not have.
@@ -90,6 +93,7 @@ int run_eccentric(const EccentricOptions& options) {
         return exit_bad_input;
     }
     if (!options.cam_table.empty() && !write_cam_table(options.cam_table, *job)) return exit_bad_input;
+    if (!options.html.empty() && !write_page(eccentric_page(*report, options.job), options.html)) return exit_bad_input;
     if (options.json) {
         print_json(*report);
     } else {
@@ -107,6 +111,7 @@ void add_eccentric_verb(CLI::App& app, int& exit_status) {
     verb->add_option("--machine", options->machine, "machine config (TOML); default: the built-in mill");
     verb->add_flag("--json", options->json, "print the report as JSON");
     verb->add_option("--cam-table", options->cam_table, "write the cam as CSV: theta_deg,x_diameter_mm");
+    verb->add_option("--html", options->html, "write an interactive page: section, centre offset, cam (HTML)");
     verb->callback([options, &exit_status] { exit_status = run_eccentric(*options); });
 }
 

@@ -11,6 +11,8 @@
 
 #include "common.hpp"
 #include "partial_file.hpp"
+#include "nckit/report/process_pages.hpp"
+#include "tool_path_page.hpp"
 #include "nckit/process/notch.hpp"
 #include "verbs.hpp"
 
@@ -23,6 +25,7 @@ struct NotchCliOptions {
     std::string output;
     MachineOptions machine;
     bool json = false;
+    std::string html;
 };
 
 std::string speed_json(const CutSpeed& speed) {
@@ -94,12 +97,21 @@ int run_notch(const NotchCliOptions& options) {
         print_diagnostics(job.diagnostics());
         return exit_bad_input;
     }
+    std::optional<ReportPage> page;
+    if (!options.html.empty()) {
+        // The page shows the rewritten program's tool path beside the speeds over the cuts.
+        page = notch_page(*job, options.program);
+        page->tool_path = plan_tool_path_text(job->program, options.output.empty() ? options.program + " (rewritten)" : options.output,
+                                              interpreter->machine());
+        if (!page->tool_path) return exit_bad_input;
+    }
     if (!options.output.empty()) {
         std::optional<PartialFile> out = PartialFile::create(options.output);
         if (!out) return exit_bad_input;
         out->write(job->program);
         if (!out->commit()) return exit_bad_input;
     }
+    if (page && !write_page(*page, options.html)) return exit_bad_input;
     if (options.json) {
         print_json(*job);
     } else {
@@ -118,6 +130,8 @@ void add_notch_verb(CLI::App& app, int& exit_status) {
     verb->add_option("-o,--output", options->output, "write the rewritten program here");
     add_machine_options(*verb, options->machine);
     verb->add_flag("--json", options->json, "print the report (with the speed profiles) as one JSON object");
+    verb->add_option("--html", options->html,
+                     "write an interactive page: speed over each cut before and after, the rewritten tool path");
     verb->callback([options, &exit_status] { exit_status = run_notch(*options); });
 }
 

@@ -13,6 +13,8 @@
 #include "partial_file.hpp"
 #include "nckit/process/pattern/pattern_run.hpp"
 #include "nckit/process/pattern/pattern_svg.hpp"
+#include "nckit/report/pattern_page.hpp"
+#include "tool_path_page.hpp"
 #include "verbs.hpp"
 
 namespace nckit::cli {
@@ -29,6 +31,7 @@ struct PatternOptions {
     bool mirror = false;
     std::string output;
     std::string svg;
+    std::string html;
     bool json = false;
 };
 
@@ -37,6 +40,7 @@ struct Sole {
     std::string name;    //!< file stem: JOB_SIZE[_mirror]
     std::string program_path;
     std::string svg_path;
+    std::string title;
 };
 
 std::string size_text(double size) { return fmt::format("{}", size); }
@@ -164,7 +168,7 @@ int run_pattern(const PatternOptions& o) {
             print_diagnostics(run.diagnostics());
             return exit_bad_input;
         }
-        soles.push_back(Sole{std::move(*run), name, "", ""});
+        soles.push_back(Sole{std::move(*run), name, "", "", title});
     }
     // Everything is computed: only now is anything written.
     auto place = [&](const std::string& target, const Sole& sole, const char* ext) {
@@ -172,7 +176,7 @@ int run_pattern(const PatternOptions& o) {
         if (!series) return target;
         return (std::filesystem::path(target) / (sole.name + ext)).string();
     };
-    for (const std::string* folder : {&o.output, &o.svg}) {
+    for (const std::string* folder : {&o.output, &o.svg, &o.html}) {
         if (series && !folder->empty()) {
             std::error_code ec;
             std::filesystem::create_directories(*folder, ec);
@@ -190,6 +194,14 @@ int run_pattern(const PatternOptions& o) {
             !write_file(sole.svg_path, pattern_svg(sole.run, *job, sole.name))) {
             return exit_bad_input;
         }
+    }
+    for (const Sole& sole : soles) {
+        const std::string page_path = place(o.html, sole, ".html");
+        if (page_path.empty()) continue;
+        // The program's tool path shows the layout, the cutting order and the air moves.
+        ReportPage page = pattern_page(sole.run, sole.title);
+        page.tool_path = plan_tool_path_text(sole.run.program, sole.name + ".nc", *machine);
+        if (!page.tool_path || !write_page(page, page_path)) return exit_bad_input;
     }
     if (o.json) {
         print_json(soles, o);
@@ -213,6 +225,8 @@ void add_pattern_verb(CLI::App& app, int& exit_status) {
     verb->add_option("-o,--output", options->output, "write the program (a folder when every size is made)");
     verb->add_option("--svg", options->svg, "draw outline, border, grooves and air moves (a folder for every size)");
     verb->add_flag("--json", options->json, "print the report as JSON");
+    verb->add_option("--html", options->html,
+                     "write an interactive page: the order's figures and the program's tool path (a folder for every size)");
     verb->callback([options, &exit_status] { exit_status = run_pattern(*options); });
 }
 

@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 
 #include "common.hpp"
+#include "nckit/report/process_pages.hpp"
 #include "partial_file.hpp"
 #include "nckit/process/piston.hpp"
 #include "nckit/process/piston_svg.hpp"
@@ -31,6 +32,7 @@ struct PistonOptions {
     std::string cam_table;
     std::string trace;
     int trace_turns = 3;
+    std::string html;
 };
 
 //! A JSON number, or null where there is none (a round section has no rpm limit).
@@ -143,6 +145,9 @@ int run_piston(PistonOptions options) {
         outputs.emplace_back((dir / "turn_error.svg").string(),
                              piston_turn_error_svg(simulation->fts, simulation->parameters.air_turns));
     }
+    if (!options.html.empty()) {
+        outputs.emplace_back(options.html, render_report_html(piston_page(job, *simulation, options.job)));
+    }
     if (!write_outputs(outputs)) return exit_bad_input;
     if (options.json) {
         print_json(*simulation);
@@ -164,6 +169,8 @@ void add_piston_verb(CLI::App& app, int& exit_status) {
                      "write section.svg, drawing.svg and turn_error.svg into this folder (created if missing)");
     verb->add_option("--cam-table", options->cam_table,
                      "write the drawn profile at the stations, every degree: z_mm,phi_deg,radius_mm");
+    verb->add_option("--html", options->html,
+                     "write an interactive page: section, error per turn, learning convergence (HTML)");
     CLI::Option* trace = verb->add_option(
         "--trace", options->trace, "write the learning run's last turns at every control tick (CSV)");
     verb->add_option("--trace-turns", options->trace_turns, "turns in --trace (default 3)")

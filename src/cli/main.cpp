@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
     nckit::cli::add_eccentric_verb(app, exit_status);
     nckit::cli::add_piston_verb(app, exit_status);
     nckit::cli::add_pattern_verb(app, exit_status);
+    nckit::cli::add_report_verb(app, exit_status);
     if (argc > 1 && argv[1][0] != '-') {
         if (auto hint = nckit::cli::unknown_verb_hint(app, argv[1])) {
             std::fprintf(stderr, "%s\n", hint->c_str());

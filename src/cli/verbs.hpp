@@ -15,5 +15,6 @@ void add_crosshatch_verb(CLI::App& app, int& exit_status);
 void add_eccentric_verb(CLI::App& app, int& exit_status);
 void add_piston_verb(CLI::App& app, int& exit_status);
 void add_pattern_verb(CLI::App& app, int& exit_status);
+void add_report_verb(CLI::App& app, int& exit_status);
 
 }  // namespace nckit::cli

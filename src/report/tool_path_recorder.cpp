@@ -1,0 +1,207 @@
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <map>
+#include <variant>
+
+#include "nckit/plan/segment_limits.hpp"
+#include "nckit/report/tool_path.hpp"
+#include "piece_points.hpp"
+#include "polyline_decimate.hpp"
+
+namespace nckit {
+
+namespace {
+// Moves shorter than this get no trajectory piece (the planner's own threshold).
+constexpr double min_length = 1e-9;
+// mm/s: a junction slower than this is a stop.
+constexpr double stop_speed_mm_s = 1e-9;
+}  // namespace
+
+struct ToolPathRecorder::Impl {
+    //! What the classification needs of a move still waiting for its end junction.
+    struct OpenMove {
+        std::size_t index = 0;
+        bool exact_stop = false;
+        SlowdownFacts facts;
+        std::vector<ReportVertex> points;  //!< its polyline, starting at the previous end
+    };
+
+    MachineConfig machine;
+    ProfileKind kind;
+    ToolPathOptions options;
+    double speed_tolerance_mm_s = 0;
+    ToolPathReport report;
+    std::map<const std::string*, std::uint32_t> file_index;
+    bool first_file_seen = false;       //!< a move of options.first_file has come
+    std::deque<std::size_t> awaiting;   //!< moves with length, waiting for their piece
+    std::vector<bool> exact_stop;       //!< per move: G61/G9 at its end
+    std::size_t finalized = 0;          //!< moves before this have their vertices and times
+    std::optional<OpenMove> open;
+    std::optional<Junction> boundary;   //!< what happened since the last main piece, if anything
+    PeakTracker peaks;
+    TimeSampler sampler;
+    double time_s = 0;                  //!< end of the last piece
+
+    Impl(const MachineConfig& m, ProfileKind k, ToolPathOptions o)
+        : machine(m), kind(k), options(o), sampler(m, o.max_samples) {
+        double top = 0;
+        for (const AxisConfig& axis : machine.axes) top = std::max(top, axis.max_velocity);
+        speed_tolerance_mm_s = options.speed_tolerance * top;
+        report.tolerance_mm = options.tolerance_mm;
+        if (!options.first_file.empty()) report.files.push_back(options.first_file);
+    }
+
+    std::uint32_t file_of(const SourceLocation& where) {
+        auto [it, added] = file_index.try_emplace(where.file.get(), static_cast<std::uint32_t>(report.files.size()));
+        if (added) {
+            if (!first_file_seen && !options.first_file.empty() && where.file_name() == options.first_file) {
+                it->second = 0;  // the program's own file, named up front
+                first_file_seen = true;
+            } else {
+                report.files.push_back(where.file_name());
+            }
+        }
+        return it->second;
+    }
+
+    void add_move(const Move& move) {
+        ReportMove out;
+        double length = 0;
+        bool stops = false;
+        if (const auto* line = std::get_if<Line>(&move.what)) {
+            out.kind = line->rapid ? ReportMoveKind::rapid : ReportMoveKind::feed;
+            out.feed_mm_s = line->rapid ? 0.0 : line->feed.mm_per_min / 60.0;
+            length = make_line(line->from, line->to).length;
+            stops = line->path.exact_stop;
+        } else if (const auto* arc = std::get_if<Arc>(&move.what)) {
+            out.kind = ReportMoveKind::arc;
+            out.feed_mm_s = arc->feed.mm_per_min / 60.0;
+            length = make_arc(*arc).length;
+            stops = arc->path.exact_stop;
+        } else if (const auto* sync = std::get_if<SyncMove>(&move.what)) {
+            out.kind = ReportMoveKind::sync;
+            out.feed_mm_s = sync->feed.mm_per_min / 60.0;
+            length = make_line(sync->from, sync->to).length;
+        } else {
+            return;
+        }
+        out.file = file_of(move.where);
+        out.line = move.where.line;
+        if (length > min_length) awaiting.push_back(report.moves.size());
+        report.moves.push_back(out);
+        exact_stop.push_back(stops);
+    }
+
+    //! Moves before `upto` without a piece of their own are points where the path stands.
+    void finalize_before(std::size_t upto) {
+        for (; finalized < upto; ++finalized) {
+            ReportMove& m = report.moves[finalized];
+            m.vertex_end = static_cast<std::uint32_t>(report.vertices.empty() ? 0 : report.vertices.size() - 1);
+            m.start_s = m.end_s = time_s;
+        }
+    }
+
+    void close_open(Junction end) {
+        if (!open) return;
+        open->facts.end = end;
+        ReportMove& m = report.moves[open->index];
+        m.slowdown = (m.kind == ReportMoveKind::feed || m.kind == ReportMoveKind::arc) ? classify_slowdown(open->facts)
+                                                                                       : Slowdown::none;
+        report.points_before_decimation += open->points.size() - 1;
+        for (const ReportVertex& v :
+             report_detail::decimate(open->points, options.tolerance_mm * 0.75, speed_tolerance_mm_s)) {
+            report.vertices.push_back(v);
+        }
+        m.vertex_end = static_cast<std::uint32_t>(report.vertices.size() - 1);
+        m.end_s = time_s;
+        finalized = open->index + 1;
+        open.reset();
+    }
+
+    void main_piece(const TrajectoryPiece& piece) {
+        // The move this piece is the path of: the next move with length from the same block.
+        std::size_t index = report.moves.size();
+        while (!awaiting.empty()) {
+            const std::size_t candidate = awaiting.front();
+            awaiting.pop_front();
+            const ReportMove& m = report.moves[candidate];
+            if (m.line == piece.where.line && report.files[m.file] == piece.where.file_name()) {
+                index = candidate;
+                break;
+            }
+        }
+        const report_detail::PiecePoints pts = report_detail::piece_points(piece, options.arc_step_deg);
+        Junction start = Junction::exact_stop;
+        if (open) {
+            if (boundary) {
+                start = *boundary;
+            } else if (exact_stop[open->index]) {
+                start = Junction::exact_stop;
+            } else {
+                start = open->facts.end_mm_s < stop_speed_mm_s ? Junction::corner : Junction::tangent;
+            }
+            close_open(start);
+        } else if (boundary) {
+            start = *boundary;
+        }
+        boundary.reset();
+        if (index >= report.moves.size()) return;  // no move of its block left: nothing to hang it on
+        finalize_before(index);
+        if (report.vertices.empty()) report.vertices.push_back(pts.points.front());
+        OpenMove next;
+        next.index = index;
+        ReportMove& m = report.moves[index];
+        m.start_s = piece.start_time_s;
+        m.peak_mm_s = pts.peak_mm_s;
+        next.facts.feed_mm_s = m.feed_mm_s;
+        next.facts.arc = piece.segment.shape == SegmentShape::arc;
+        next.facts.limit_mm_s = m.feed_mm_s > 0 ? segment_limits(piece.segment, machine, m.feed_mm_s, kind).max_velocity
+                                                : 0.0;
+        next.facts.peak_mm_s = pts.peak_mm_s;
+        next.facts.start_mm_s = pts.start_mm_s;
+        next.facts.end_mm_s = pts.end_mm_s;
+        next.facts.start = start;
+        next.points.push_back(report.vertices.back());
+        next.points.insert(next.points.end(), pts.points.begin() + 1, pts.points.end());
+        open = std::move(next);
+    }
+
+    void add_piece(const TrajectoryPiece& piece) {
+        peaks.add(piece);
+        sampler.add(piece);
+        if (piece.kind == PieceKind::motion && !piece.blend) {
+            main_piece(piece);
+        } else if (piece.kind == PieceKind::motion) {
+            boundary = Junction::corner;
+            if (open) {
+                const report_detail::PiecePoints pts = report_detail::piece_points(piece, options.arc_step_deg);
+                open->points.insert(open->points.end(), pts.points.begin() + 1, pts.points.end());
+            }
+        } else if (piece.kind == PieceKind::dwell || piece.io.waits) {
+            boundary = Junction::exact_stop;
+        }
+        time_s = piece.start_time_s + piece.duration_s;
+        if (open && piece.kind == PieceKind::motion) report.moves[open->index].end_s = time_s;
+    }
+
+    ToolPathReport finish() {
+        close_open(Junction::exact_stop);
+        finalize_before(report.moves.size());
+        report.peaks = peaks.peaks();
+        report.samples = sampler.finish();
+        report.cycle_time_s = time_s;
+        return std::move(report);
+    }
+};
+
+ToolPathRecorder::ToolPathRecorder(const MachineConfig& machine, ProfileKind kind, ToolPathOptions options)
+    : impl_(std::make_unique<Impl>(machine, kind, options)) {}
+ToolPathRecorder::~ToolPathRecorder() = default;
+ToolPathRecorder::ToolPathRecorder(ToolPathRecorder&&) noexcept = default;
+ToolPathRecorder& ToolPathRecorder::operator=(ToolPathRecorder&&) noexcept = default;
+void ToolPathRecorder::add_move(const Move& move) { impl_->add_move(move); }
+void ToolPathRecorder::add_piece(const TrajectoryPiece& piece) { impl_->add_piece(piece); }
+ToolPathReport ToolPathRecorder::finish() { return impl_->finish(); }
+
+}  // namespace nckit

@@ -1,0 +1,38 @@
+// nckit's report page: reads the inline data and builds the page. window.nckitReport exposes
+// what the page shows (for the browser tests and for scripting it from the console).
+import "uplot/dist/uPlot.min.css";
+import "./style.css";
+import { loadPayload } from "./payload.js";
+import { buildToolPathPage } from "./tool_path_page.js";
+import { xyChart } from "./charts.js";
+import { el, figureTable } from "./dom.js";
+
+async function start() {
+  const t0 = performance.now();
+  const root = document.getElementById("app");
+  const { header, blob, bytes } = await loadPayload(document.getElementById("nckit-data").textContent);
+  root.appendChild(el("h1", null, header.title));
+  let state = {};
+  if (header.figures.length) root.appendChild(figureTable(header.figures));
+  if (header.charts.length) {
+    const box = el("section", "charts process-charts");
+    root.appendChild(box);
+    for (const chart of header.charts) xyChart(box, chart, blob);
+  }
+  if (header.tool_path) {
+    const section = el("section", "tool-path");
+    if (header.kind !== "program") section.appendChild(el("h2", null, "Tool path of the program"));
+    root.appendChild(section);
+    state = buildToolPathPage(section, header, blob);
+  }
+  const footer = el("footer", null, "nckit report · data " + (bytes / 1e6).toFixed(2) + " MB unpacked");
+  root.appendChild(footer);
+  // Ready once the first frame is on screen.
+  await new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(resolve)));
+  window.nckitReport = Object.assign(state, { ready: true, kind: header.kind, charts: header.charts.length, buildMs: performance.now() - t0 });
+}
+
+start().catch((error) => {
+  console.error(error);
+  document.getElementById("app").appendChild(el("pre", "error", "nckit report: " + (error && error.stack ? error.stack : error)));
+});

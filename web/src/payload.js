@@ -1,0 +1,58 @@
+// Unpacks the page's data: base64 → gzip (the browser's own DecompressionStream) → a JSON header
+// and typed arrays (layout in docs/report.md, written by src/report/payload.cpp).
+
+function decodeDelta(bytes, count, scale) {
+  const out = new Float64Array(count);
+  let pos = 0;
+  let acc = 0;
+  for (let i = 0; i < count; i++) {
+    let value = 0;
+    let factor = 1;
+    let b;
+    do {
+      b = bytes[pos++];
+      value += (b & 0x7f) * factor;
+      factor *= 128;
+    } while (b & 0x80);
+    // zigzag: even numbers are the non-negative deltas, odd ones the negative
+    acc += value % 2 === 1 ? -(value + 1) / 2 : value / 2;
+    out[i] = acc * scale;
+  }
+  return out;
+}
+
+export async function loadPayload(base64Text) {
+  // Uint8Array.fromBase64 where the browser has it (Chromium 140 on), else atob; both far
+  // faster than fetching a data: URL of the same text.
+  const text = base64Text.trim();
+  let packed;
+  if (typeof Uint8Array.fromBase64 === "function") {
+    packed = Uint8Array.fromBase64(text);
+  } else {
+    const binary = atob(text);
+    packed = new Uint8Array(binary.length);
+    for (let i = 0; i < binary.length; i++) packed[i] = binary.charCodeAt(i);
+  }
+  const unpacked = new Blob([packed]).stream().pipeThrough(new DecompressionStream("gzip"));
+  const buffer = await new Response(unpacked).arrayBuffer();
+  const headerLength = new DataView(buffer).getUint32(0, true);
+  const header = JSON.parse(new TextDecoder().decode(new Uint8Array(buffer, 4, headerLength)));
+  const base = Math.ceil((4 + headerLength) / 8) * 8;
+  const cache = new Map();
+  function blob(name) {
+    if (cache.has(name)) return cache.get(name);
+    const e = header.blobs && header.blobs[name];
+    if (!e) throw new Error("page data has no " + name);
+    const at = base + e.offset;
+    let value;
+    if (e.type === "u8") value = new Uint8Array(buffer, at, e.length);
+    else if (e.type === "f32") value = new Float32Array(buffer.slice(at, at + e.length));
+    else if (e.type === "f64") value = new Float64Array(buffer.slice(at, at + e.length));
+    else if (e.type === "text") value = new TextDecoder().decode(new Uint8Array(buffer, at, e.length));
+    else if (e.type === "delta") value = decodeDelta(new Uint8Array(buffer, at, e.length), e.count, e.scale);
+    else throw new Error("unknown blob type " + e.type);
+    cache.set(name, value);
+    return value;
+  }
+  return { header, blob, bytes: buffer.byteLength };
+}

@@ -1,0 +1,42 @@
+// Time until a report page is interactive in Debian's chromium: from the start of navigation
+// until the page has built everything and drawn its first frame (window.nckitReport.ready).
+// Usage: node web/test/measure_load.mjs PAGE.html [RUNS]   → one JSON line
+import { launch, openPage } from "./browser.mjs";
+
+const [file, runsText] = process.argv.slice(2);
+const runs = Number(runsText || 3);
+const browser = await launch();
+const times = [];
+const cpu = [];
+let info = null;
+try {
+  for (let i = 0; i < runs; i++) {
+    const { page, errors, readyMs } = await openPage(browser, file);
+    if (errors.length) throw new Error(errors.join(" | "));
+    times.push(readyMs);
+    // CPU time of the page's main thread (what it needs of an idle core), from chromium.
+    const metrics = await page.metrics();
+    cpu.push(Math.round(metrics.TaskDuration * 1000));
+    info = await page.evaluate(() => ({
+      moves: window.nckitReport.moves,
+      drawnSegments: window.nckitReport.drawnSegments,
+      buildMs: Math.round(window.nckitReport.buildMs),
+      timings: window.nckitReport.timings,
+    }));
+    // A click on the path is answered (picking over every drawn segment).
+    const t0 = Date.now();
+    await page.evaluate(() => {
+      const r = window.nckitReport;
+      const p = r.segmentScreenPoint(Math.floor(r.moves / 2));
+      r.canvas.dispatchEvent(new PointerEvent("pointerdown", { clientX: p.x, clientY: p.y, bubbles: true }));
+      r.canvas.dispatchEvent(new PointerEvent("pointerup", { clientX: p.x, clientY: p.y, bubbles: true }));
+    });
+    info.clickMs = Date.now() - t0;
+    await page.close();
+  }
+} finally {
+  await browser.close();
+}
+times.sort((a, b) => a - b);
+cpu.sort((a, b) => a - b);
+console.log(JSON.stringify({ main_thread_cpu_ms: cpu, ready_ms: times, best_ms: times[0], median_ms: times[Math.floor(times.length / 2)], ...info }));
