@@ -36,6 +36,9 @@ CompError CutterCompensator::error(const SourceLocation& where, std::string code
 }
 
 void CutterCompensator::start(CompSide side, double radius_mm, Plane plane) {
+    // G41 again before the exit move: the tool is still beside the old contour, and the next
+    // move leaves from there.
+    leave_from_tool_ = mode_ == Mode::exiting;
     mode_ = Mode::waiting;
     side_ = side == CompSide::left ? 1 : -1;
     radius_mm_ = radius_mm;
@@ -83,6 +86,12 @@ std::optional<CompError> CutterCompensator::add(Move move, std::vector<Move>& ou
                              "cutter compensation cannot start on an arc: start it with a G0/G1 move in the plane");
             }
             if (is_line && moves_in_plane(move)) return start_up(std::move(move), out);
+            if (leave_from_tool_) {
+                if (auto* line = std::get_if<Line>(&move.what)) {
+                    line->from = tool_;
+                    leave_from_tool_ = false;
+                }
+            }
             out.push_back(std::move(move));
             return std::nullopt;
         case Mode::on:
@@ -116,6 +125,8 @@ std::optional<CompError> CutterCompensator::start_up(Move move, std::vector<Move
     }
     Vec2 normal = static_cast<double>(side_) * interp::comp::left_normal(interp::comp::unit(to - from));
     set_in_plane(line.to, p, to + radius_mm_ * normal);
+    if (leave_from_tool_) line.from = tool_;  // the geometry stays the programmed one, as LinuxCNC
+    leave_from_tool_ = false;
     programmed_ = Programmed{};
     programmed_.start[0] = from.x;
     programmed_.start[1] = from.y;

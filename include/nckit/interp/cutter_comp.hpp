@@ -8,18 +8,13 @@
 #include <string>
 #include <vector>
 
+#include "nckit/core/machine.hpp"
 #include "nckit/core/source_location.hpp"
 #include "nckit/interp/move.hpp"
 
 namespace nckit {
 
 enum class CompSide { left, right };  // G41, G42: the tool's side looking along the motion
-
-//! Fanuc's start-up types (parameter SUP): how the start-up block ends on an outside corner.
-enum class CompStartup {
-    type_a,  //!< r from the next block's start, perpendicular to it: no corner path at all
-    type_b   //!< r perpendicular to the start-up block, then the corner as between any two blocks
-};
 
 //! Why the compensated path cannot be made; `where` is the block it is about.
 struct CompError {
@@ -77,6 +72,7 @@ private:
     AxisVector tool_;       //!< where the tool is after everything held, mm / deg
     Programmed programmed_; //!< the held planar move as programmed
     bool held_start_up_ = false;  //!< the held move is the start-up block
+    bool leave_from_tool_ = false;  //!< G41/G42 came before the exit move after G40
     std::vector<Move> held_;      //!< [0]: the held planar move, compensated; then what followed it
 };
 
