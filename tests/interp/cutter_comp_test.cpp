@@ -94,6 +94,27 @@ TEST(CutterComp, ModalCodeAndDReadBack) {
     EXPECT_EQ(t.back(), "G1 X41.0000 Y40.0000 Z0.0000 F100.0000");
 }
 
+MachineConfig mill_with_tools() {
+    MachineConfig m = default_mill();
+    ToolEntry t3;
+    t3.number = 3;
+    t3.radius_mm = 4.0;
+    t3.radius_wear_mm = -0.1;
+    m.tools.insert(t3);
+    return m;
+}
+
+TEST(CutterComp, DReadsRadiusPlusWearFromTheToolTable) {
+    // Radius 4 - 0.1 wear = 3.9 to the left of X0 → X20.
+    Texts t = texts("G0 X-10 Y0 Z0\nG41 D3 G1 X0 F100\nX20\nG40 X30\n", mill_with_tools());
+    ASSERT_EQ(t.size(), 4U);
+    EXPECT_EQ(t[1], "G1 X0.0000 Y3.9000 Z0.0000 F100.0000");
+    // D is modal: a later G42 without D takes D3 again.
+    t = texts("D3\nG0 X-10 Y0 Z0\nG42 G1 X0 F100\nX20\nG40 X30\n", mill_with_tools());
+    ASSERT_EQ(t.size(), 4U);
+    EXPECT_EQ(t[1], "G1 X0.0000 Y-3.9000 Z0.0000 F100.0000");
+}
+
 // ---- malformed use ----------------------------------------------------------------------------
 
 TEST(CutterCompErrors, D0AndMissingTableEntry) {
@@ -103,10 +124,12 @@ TEST(CutterCompErrors, D0AndMissingTableEntry) {
     EXPECT_EQ(error_where("G42 G1 X10 F100\n"), "cutter-comp 1:1") << "no D at all";
     d = error_of("G41 D7 G1 X10 F100\n");
     EXPECT_EQ(where(d), "unknown-tool 1:5");
-    EXPECT_EQ(d.message, "D7 has no entry in the tool table");
+    EXPECT_EQ(d.message, "D7 needs a tool table (--tools FILE or tools = \"FILE\")");
+    d = error_of("G41 D4 G1 X10 F100\n", mill_with_tools());
+    EXPECT_EQ(where(d), "unknown-tool 1:5");
+    EXPECT_EQ(d.message, "D4 has no entry in the tool table");
     EXPECT_EQ(error_where("G41 D1.5 G1 X10 F100\n"), "bad-value 1:5");
     EXPECT_EQ(error_where("G41.1 G1 X10 F100\n"), "missing-word 1:1");
-    EXPECT_EQ(error_where("G1 X10 D3 F100\n"), "unsupported-word 1:8") << "D with nothing to use it";
 }
 
 TEST(CutterCompErrors, RadiusLargerThanAnInsideArc) {
