@@ -36,7 +36,12 @@ std::optional<Diagnostic> Executor::check_cutter_comp() {
         }
         const GCode non_modal = words_.group(ModalGroup::non_modal);
         const std::uint32_t nm_column = words_.group_column(ModalGroup::non_modal);
-        if (non_modal == g(28)) return refuse(nm_column, "G28");
+        if (non_modal == g(28) || non_modal == g(30)) return refuse(nm_column, fmt::format("G{}", non_modal / 10));
+        if (non_modal == g(31)) return refuse(nm_column, "G31 probing");
+        for (std::size_t i = 0; i < words_.mcode_count; ++i) {
+            if (words_.mcodes[i].code == 6) return refuse(words_.mcodes[i].column, "M6 tool change");
+        }
+        if (is_drilling_cycle(motion_) && block_has_axis_words()) return refuse(motion_column(), "a drilling cycle");
         if (non_modal == g(53)) return refuse(nm_column, "G53");
         if (non_modal == g(92) || non_modal == g(92, 1) || non_modal == g(52) || non_modal == g(10) ||
             (non_modal == g(50) && block_has_axis_words())) {

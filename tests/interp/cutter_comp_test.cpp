@@ -156,6 +156,8 @@ TEST(CutterCompErrors, StartAndCancelRules) {
     EXPECT_EQ(error_where("G41.1 D4\nG18\n"), "cutter-comp 2:1");
     EXPECT_EQ(error_where("G41.1 D4\nG28 X0\n"), "cutter-comp 2:1");
     EXPECT_EQ(error_where("G41.1 D4\nG53 G0 X0\n"), "cutter-comp 2:1");
+    EXPECT_EQ(error_where("G41.1 D4\nG81 X0 Y0 Z-1 R1 F100\n"), "cutter-comp 2:1");
+    EXPECT_EQ(error_where("G41.1 D4\nT2 M6\n"), "cutter-comp 2:4");
     EXPECT_EQ(error_where("G41.1 D4\nG92 X0\n"), "cutter-comp 2:1");
     EXPECT_EQ(error_where("G41.1 D4\nG55\n"), "cutter-comp 2:1");
     EXPECT_EQ(error_where("G0 X-10\nG41.1 D4 G1 X0 F100\nG33 X10 K1\n"), "cutter-comp 3:1");
