@@ -129,7 +129,7 @@ std::vector<Element> contour(std::mt19937& rng, double size, double inner, bool 
         }
         std::vector<Element> out;
         for (int i = 0; i < n; ++i) {
-            Element e{v[i], v[(i + 1) % n]};
+            Element e{v[i], v[(i + 1) % n], false, {}, true};
             double chord = dist(e.a, e.b);
             if (chord < size * 0.2) break;
             if (arcs && u(rng) < 0.35) {
@@ -193,12 +193,12 @@ Outcome run(const std::vector<Element>& c, CompSide side, double r, P2 entry) {
         if (comp.add(std::move(m), o.moves)) o.failed = true;
     };
     comp.start(side, r, Plane::xy);
-    add(move_of(Element{entry, c[0].a}, line++));
+    add(move_of(Element{entry, c[0].a, false, {}, true}, line++));
     for (int pass = 0; pass < 2; ++pass) {
         for (const Element& e : c) add(move_of(e, line++));
     }
     if (!o.failed && comp.cancel(o.moves)) o.failed = true;
-    add(move_of(Element{c[0].a, entry}, line++));
+    add(move_of(Element{c[0].a, entry, false, {}, true}, line++));
     return o;
 }
 
