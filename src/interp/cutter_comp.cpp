@@ -3,7 +3,6 @@
 #include "nckit/interp/cutter_comp.hpp"
 
 #include <cmath>
-#include <numbers>
 
 #include <fmt/format.h>
 
@@ -12,13 +11,10 @@
 
 namespace nckit {
 
-using interp::comp::Corner;
-using interp::comp::Segment;
 using interp::comp::Vec2;
 
 namespace {
 
-constexpr double two_pi = 2.0 * std::numbers::pi;
 // Events and off-plane moves held behind one planar move; a program that piles up more than
 // this while compensation is on has lost its contour.
 constexpr std::size_t max_held = 100000;
