@@ -231,6 +231,9 @@ void check(const std::vector<Element>& c, const Outcome& o, double r, const std:
                 ASSERT_NEAR(off, r, exact_mm) << what << " line " << line;
             }
             for (std::size_t j : {(k + n - 1) % n, k, (k + 1) % n}) {
+                // The last element ends at G40 perpendicular to itself: the contour does not go
+                // on into element 0 there, the exit move does.
+                if (line == 1 + 2 * n && j == (k + 1) % n) continue;
                 ASSERT_GE(distance_to(p, c[j]), r - 1e-6) << what << " gouges element " << j << " at line " << line;
             }
         }
