@@ -11,6 +11,7 @@
 
 namespace nckit {
 
+using interp::comp::Segment;
 using interp::comp::Vec2;
 
 namespace {
@@ -41,6 +42,7 @@ void CutterCompensator::start(CompSide side, double radius_mm, Plane plane) {
     plane_ = plane;
     held_.clear();
     held_start_up_ = false;
+    has_before_ = false;
 }
 
 bool CutterCompensator::moves_in_plane(const Move& move) const {
@@ -176,6 +178,15 @@ std::optional<CompError> CutterCompensator::check_held(const SourceLocation& nex
 std::optional<CompError> CutterCompensator::release(std::vector<Move>& out) {
     if (held_.empty()) return std::nullopt;
     if (auto e = check_held(SourceLocation{})) return e;
+    if (has_before_ && !held_start_up_) {
+        Segment before;
+        before.arc = before_.arc;
+        before.start = {before_.start[0], before_.start[1]};
+        before.end = {before_.end[0], before_.end[1]};
+        before.center = {before_.center[0], before_.center[1]};
+        before.turn = before_.turn;
+        if (auto e = check_clearance(before, held_.front().where, "the block before it")) return e;
+    }
     for (Move& m : held_) out.push_back(std::move(m));
     held_.clear();
     held_start_up_ = false;

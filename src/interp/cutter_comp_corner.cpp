@@ -2,6 +2,7 @@
 // and where the next one starts (and, on an outside corner, adds the path around it).
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -62,7 +63,49 @@ void place(Move& move, PlaneAxes p, const AxisVector& from, Vec2 to, double prog
     arc.full_turns = std::max(0, static_cast<int>(std::lround((programmed_sweep_rad - sweep) / two_pi)));
 }
 
+//! Points along a settled move in the plane, ends included.
+std::vector<Vec2> samples_of(const Move& move, PlaneAxes p) {
+    constexpr int n = 16;
+    std::vector<Vec2> out;
+    if (const auto* line = std::get_if<Line>(&move.what)) {
+        Vec2 a = in_plane(line->from, p);
+        Vec2 b = in_plane(line->to, p);
+        for (int i = 0; i <= n; ++i) out.push_back(a + (static_cast<double>(i) / n) * (b - a));
+        return out;
+    }
+    const auto& arc = std::get<Arc>(move.what);
+    Vec2 c = in_plane(arc.center, p);
+    Vec2 a = in_plane(arc.from, p);
+    double r = interp::comp::length(a - c);
+    double a0 = std::atan2(a.y - c.y, a.x - c.x);
+    double sweep = std::min(arc_sweep_rad(arc), two_pi) * (arc.direction == ArcDirection::counterclockwise ? 1 : -1);
+    for (int i = 0; i <= n; ++i) {
+        double angle = a0 + sweep * i / n;
+        out.push_back({c.x + r * std::cos(angle), c.y + r * std::sin(angle)});
+    }
+    return out;
+}
+
 }  // namespace
+
+std::optional<CompError> CutterCompensator::check_clearance(const Segment& element, const SourceLocation& where,
+                                                            const char* which) const {
+    // Interference beyond the corner: an arc cut from outside may bulge back toward the offset
+    // of its neighbour. The settled move must keep r from both neighbouring contour elements.
+    PlaneAxes p = plane_axes(plane_);
+    // Corners within the tangent tolerance leave the next move's start up to r(1 - cos 0.05)
+    // nearer than r: that much is allowed.
+    double limit = radius_mm_ * std::cos(interp::comp::corner_tolerance_rad) - 1e-7;
+    for (Vec2 point : samples_of(held_.front(), p)) {
+        if (interp::comp::distance_to(point, element) < limit) {
+            return error(where, "cutter-gouge",
+                         fmt::format("cutter compensation would gouge: the tool (radius {:.4f} mm) on line {} "
+                                     "comes closer than its radius to the contour of {}",
+                                     radius_mm_, held_.front().where.line, which));
+        }
+    }
+    return std::nullopt;
+}
 
 std::optional<CompError> CutterCompensator::next_planar(Move move, std::vector<Move>& out) {
     PlaneAxes p = plane_axes(plane_);
@@ -115,6 +158,18 @@ std::optional<CompError> CutterCompensator::next_planar(Move move, std::vector<M
         place(held, p, arc.from, a_end, programmed_.sweep_rad);
     }
     if (auto e = check_held(move.where)) return e;
+    if (!held_start_up_) {
+        if (auto e = check_clearance(b, move.where, "this block")) return e;
+    }
+    if (has_before_ && !held_start_up_) {
+        Segment before;
+        before.arc = before_.arc;
+        before.start = {before_.start[0], before_.start[1]};
+        before.end = {before_.end[0], before_.end[1]};
+        before.center = {before_.center[0], before_.center[1]};
+        before.turn = before_.turn;
+        if (auto e = check_clearance(before, move.where, "the block before it")) return e;
+    }
     for (std::size_t i = 1; i < held_.size(); ++i) {
         if (auto* line = std::get_if<Line>(&held_[i].what)) {
             set_in_plane(line->from, p, a_end);
@@ -156,6 +211,8 @@ std::optional<CompError> CutterCompensator::next_planar(Move move, std::vector<M
     }
 
     // The new move is held with its provisional end r beside the contour.
+    before_ = programmed_;
+    has_before_ = !held_start_up_;
     programmed_ = Programmed{};
     programmed_.arc = b.arc;
     programmed_.start[0] = b.start.x;

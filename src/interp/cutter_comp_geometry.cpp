@@ -105,6 +105,22 @@ std::optional<Vec2> inside_corner(const Segment& a_off, const Segment& b_off, Ve
     return length(points[0] - corner) <= length(points[1] - corner) ? points[0] : points[1];
 }
 
+double distance_to(Vec2 p, const Segment& s) {
+    if (!s.arc) {
+        Vec2 d = s.end - s.start;
+        double len2 = dot(d, d);
+        double t = len2 > 0 ? std::clamp(dot(p - s.start, d) / len2, 0.0, 1.0) : 0.0;
+        return length(p - (s.start + t * d));
+    }
+    // On the arc's span the distance is radial; beyond it, the nearer end point.
+    double span = sweep_rad(s.start, s.end, s.center, s.turn);
+    double to_p = sweep_rad(s.start, p, s.center, s.turn);
+    if (length(s.end - s.start) == 0 || to_p <= span) {
+        return std::abs(length(p - s.center) - length(s.start - s.center));
+    }
+    return std::min(length(p - s.start), length(p - s.end));
+}
+
 double sweep_rad(Vec2 from, Vec2 to, Vec2 center, int turn) {
     double a0 = std::atan2(from.y - center.y, from.x - center.x);
     double a1 = std::atan2(to.y - center.y, to.x - center.x);

@@ -57,6 +57,9 @@ inline constexpr double corner_tolerance_rad = 0.05;
 //! they do not cross (the tool cannot reach into the corner without cutting the contour).
 [[nodiscard]] std::optional<Vec2> inside_corner(const Segment& a_off, const Segment& b_off, Vec2 corner);
 
+//! Shortest distance from p to the element (a line segment, or an arc between its ends).
+[[nodiscard]] double distance_to(Vec2 p, const Segment& s);
+
 //! Angle an arc sweeps from `from` to `to` about `center` in direction turn, rad, in (0, 2π].
 [[nodiscard]] double sweep_rad(Vec2 from, Vec2 to, Vec2 center, int turn);
 

@@ -14,6 +14,10 @@
 
 namespace nckit {
 
+namespace interp::comp {
+struct Segment;
+}
+
 enum class CompSide { left, right };  // G41, G42: the tool's side looking along the motion
 
 //! Why the compensated path cannot be made; `where` is the block it is about.
@@ -60,6 +64,8 @@ private:
     std::optional<CompError> next_planar(Move move, std::vector<Move>& out);
     std::optional<CompError> release(std::vector<Move>& out);  //!< held move keeps its end
     std::optional<CompError> check_held(const SourceLocation& next) const;
+    std::optional<CompError> check_clearance(const interp::comp::Segment& element, const SourceLocation& where,
+                                             const char* which) const;
     void hold_off_plane(Move move);
     [[nodiscard]] bool moves_in_plane(const Move& move) const;
     [[nodiscard]] CompError error(const SourceLocation& where, std::string code, std::string message) const;
@@ -71,6 +77,8 @@ private:
     Plane plane_ = Plane::xy;
     AxisVector tool_;       //!< where the tool is after everything held, mm / deg
     Programmed programmed_; //!< the held planar move as programmed
+    Programmed before_;     //!< the planar move before it, as programmed
+    bool has_before_ = false;  //!< before_ is a contour move (not the start-up move)
     bool held_start_up_ = false;  //!< the held move is the start-up block
     bool leave_from_tool_ = false;  //!< G41/G42 came before the exit move after G40
     std::vector<Move> held_;      //!< [0]: the held planar move, compensated; then what followed it
