@@ -20,7 +20,7 @@ ModalView Executor::modal_view() const {
     view.spindle_direction = modal_.spindle.direction;
     view.constant_surface_speed = modal_.spindle.constant_surface_speed;
     view.surface_speed_m_min = modal_.spindle.surface_speed_m_min;
-    view.tool = modal_.tool;
+    view.tool = modal_.tool.selected;
     return view;
 }
 
