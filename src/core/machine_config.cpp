@@ -104,6 +104,10 @@ void read_machine(const toml::table& table, MachineConfig& config, ConfigSink& s
                                {"calculator", "least_increment"})) {
         config.decimal_point_input = decimal_point_modes[*i];
     }
+    constexpr std::array startups{CompStartup::type_b, CompStartup::type_a};
+    if (auto i = reader.choice("cutter_comp_startup", Need::optional, "cutter_comp_startup", {"type_b", "type_a"})) {
+        config.cutter_comp_startup = startups[*i];
+    }
     constexpr std::array profiles{ProfileKind::scurve, ProfileKind::trapezoid};
     if (auto i = reader.choice("profile", Need::optional, "profile", {"scurve", "trapezoid"})) {
         config.profile = profiles[*i];

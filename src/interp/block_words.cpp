@@ -50,7 +50,7 @@ std::optional<ModalGroup> group_of(GCode code) {
         case g(90): case g(91): return ModalGroup::distance;
         case g(94): case g(95): return ModalGroup::feed_mode;
         case g(20): case g(21): return ModalGroup::units;
-        case g(40): return ModalGroup::cutter_comp;
+        case g(40): case g(41): case g(42): case g(41, 1): case g(42, 1): return ModalGroup::cutter_comp;
         case g(43): case g(44): case g(43, 1): case g(49): return ModalGroup::length_comp;
         case g(98): case g(99): return ModalGroup::return_mode;
         case g(90, 1): case g(91, 1): return ModalGroup::arc_distance;

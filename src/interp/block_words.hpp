@@ -22,7 +22,7 @@ enum class ModalGroup {
     distance,       // G90 G91
     feed_mode,      // G94 G95
     units,          // G20 G21
-    cutter_comp,    // G40
+    cutter_comp,    // G40 G41 G42 G41.1 G42.1
     length_comp,    // G43 G44 G43.1 G49
     spindle_mode,   // G96 G97
     work_system,    // G54..G59

@@ -15,7 +15,7 @@ constexpr double least_increment_inch = 0.0001;
 }  // namespace
 
 Executor::Executor(const MachineConfig& machine, const InterpreterOptions& options)
-    : machine_(machine), options_(options), tools_(machine.tools) {
+    : machine_(machine), options_(options), tools_(machine.tools), comp_(machine.cutter_comp_startup) {
     for (const AxisConfig& axis : machine.axes) {
         configured_.insert(axis.axis);
         rotary_[index(axis.axis)] = axis.kind == AxisKind::rotary;
@@ -75,6 +75,7 @@ std::optional<Diagnostic> Executor::run(const Block& block, std::vector<Move>& o
     block_ = &block;
     if (auto e = collect_words(block, words_)) return e;
     if (auto e = check_words()) return e;
+    if (auto e = check_cutter_comp()) return e;
 
     // Everything below may change state, so work on copies and commit at the end: an error
     // leaves the interpreter as it was before the block.
@@ -83,6 +84,8 @@ std::optional<Diagnostic> Executor::run(const Block& block, std::vector<Move>& o
     const bool may_set_offsets = words_.group(ModalGroup::non_modal) >= 0;
     std::optional<Offsets> saved_offsets;
     if (may_set_offsets) saved_offsets = offsets_;
+    std::optional<CutterCompensator> saved_comp;
+    if (comp_.engaged() || words_.group(ModalGroup::cutter_comp) >= 0) saved_comp = comp_;
     AxisVector saved_position = position_;
     const ProgramTransform saved_transform = transform_;
     const AxisVector saved_programmed = programmed_;
@@ -93,6 +96,7 @@ std::optional<Diagnostic> Executor::run(const Block& block, std::vector<Move>& o
         modal_ = saved_modal;
         if (saved_offsets) offsets_ = *saved_offsets;
         position_ = saved_position;
+        if (saved_comp) comp_ = *saved_comp;
         out.resize(saved_size);
         return std::optional<Diagnostic>(std::move(d));
     };
@@ -106,6 +110,7 @@ std::optional<Diagnostic> Executor::run(const Block& block, std::vector<Move>& o
     if (auto e = transformed_move(out)) return fail(*e);
     if (auto e = emit_mcodes(out, true)) return fail(*e);
     program_end = words_.has_m(2) || words_.has_m(30);
+    if (auto e = compensate(out, saved_size, program_end)) return fail(*e);
     if (program_end) parts_done_ += 1;
     if (words_.mcode_count > 0) last_mcode_ = words_.mcodes[words_.mcode_count - 1].code;
     for (std::size_t i = saved_size; i < out.size(); ++i) elapsed_s_ += duration_s(out[i]);

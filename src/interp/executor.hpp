@@ -8,6 +8,7 @@
 #include "modal_state.hpp"
 #include "program_transform.hpp"
 #include "nckit/core/machine.hpp"
+#include "nckit/interp/cutter_comp.hpp"
 #include "nckit/interp/interpreter.hpp"
 #include "nckit/interp/modal_view.hpp"
 
@@ -31,6 +32,9 @@ public:
     [[nodiscard]] std::optional<MacroValue> read_system(std::int64_t number) const;
     [[nodiscard]] std::optional<SystemVariables::WriteError> write_system(std::int64_t number, double value);
 
+    //! The end of the program (M2/M30 or the end of its text): compensated moves still held go out.
+    [[nodiscard]] std::optional<Diagnostic> end_program(std::vector<Move>& out);
+
     [[nodiscard]] bool inch_units() const { return modal_.length_factor_mm != 1.0; }
     //! Units, offsets and modes after the last block run (executor_modal_view.cpp).
     [[nodiscard]] ModalView modal_view() const;
@@ -42,6 +46,12 @@ private:
     // Checks (executor_checks.cpp): nothing changes state.
     std::optional<Diagnostic> check_words();
     std::optional<Diagnostic> check_axis_letter(const Word& word) const;
+
+    // Cutter radius compensation (executor_cutter_comp.cpp).
+    std::optional<Diagnostic> check_cutter_comp();
+    std::optional<Diagnostic> compensate(std::vector<Move>& out, std::size_t first, bool program_end);
+    [[nodiscard]] bool block_starts_comp() const;
+    [[nodiscard]] std::optional<double> tool_radius_mm(int d_number) const;
 
     // Values of words, converted to mm / deg / s (executor.cpp).
     [[nodiscard]] double axis_value(Axis axis, const Word& word) const;
@@ -116,6 +126,10 @@ private:
     const Block* block_ = nullptr;  //!< the block being run
     BlockWords words_;
     GCode motion_ = g(80);          //!< motion code for this block (explicit or modal)
+
+    CutterCompensator comp_;
+    CompSide comp_side_ = CompSide::left;  //!< from check_cutter_comp() for this block's G41/G42
+    double comp_radius_mm_ = 0;            //!< likewise, mm
 
     double elapsed_s_ = 0;          //!< simulated time, s
     int last_mcode_ = 0;            //!< #4113

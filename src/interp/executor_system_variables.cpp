@@ -42,7 +42,7 @@ std::optional<MacroValue> Executor::modal_code(int group) const {
         case 3: return code(modal_.incremental ? 91 : 90);
         case 5: return code(modal_.feed_mode == FeedMode::per_revolution ? 95 : 94);
         case 6: return code(modal_.length_factor_mm != 1.0 ? 20 : 21);
-        case 7: return code(40);
+        case 7: return code(modal_.cutter_comp == 0 ? 40 : modal_.cutter_comp);
         case 8: return code(modal_.tool.length_mode / 10.0);
         case 9: return code(is_drilling_cycle(modal_.motion) ? modal_.motion / 10 : 80);
         case 10: return code(modal_.cycle.return_to_initial ? 98 : 99);

@@ -50,7 +50,10 @@ std::optional<Diagnostic> Executor::set_tool_length() {
     ToolState& tool = modal_.tool;
     int h = -1;
     if (auto e = number_word('H', h)) return e;
-    if (const Word* d = words_.word('D'); d != nullptr && words_.group(ModalGroup::spindle_mode) != g(96)) {
+    // G41.1/G42.1 D is a diameter, not an offset number.
+    if (const Word* d = words_.word('D');
+        d != nullptr && words_.group(ModalGroup::spindle_mode) != g(96) &&
+        words_.group(ModalGroup::cutter_comp) != g(41, 1) && words_.group(ModalGroup::cutter_comp) != g(42, 1)) {
         int number = 0;
         if (auto e = number_word('D', number)) return e;
         tool.d_number = number;

@@ -110,7 +110,7 @@ std::optional<InterpResult> ProgramRunner::fill(std::vector<Move>& pending) {
             if (!line) return InterpResult(line.diagnostics().front());
             const bool in_call = frames_.size() > 1;
             if (!line.value()) {
-                if (!in_call) return end_of_main();
+                if (!in_call) return finish_main(pending);
                 block_.location = make_location(source().file(), source().next_line_number(), 1);
                 return InterpResult(alarm_at(block_, 1, alarm::format,
                                              fmt::format("program O{} ends without M99", frame().program_number)));
@@ -133,7 +133,7 @@ std::optional<InterpResult> ProgramRunner::fill(std::vector<Move>& pending) {
                     return InterpResult(alarm_at(block_, 1, alarm::format, "'%' inside a called program: M99 missing"));
                 }
                 // A leading '%' opens the tape; any later one closes it and ends the program.
-                if (seen_tape_mark_ || seen_block_) return end_of_main();
+                if (seen_tape_mark_ || seen_block_) return finish_main(pending);
                 seen_tape_mark_ = true;
                 // The program proper starts after the tape mark: M99 in the main program restarts here.
                 frames_[0].program.offset = source().next_offset();
@@ -172,7 +172,7 @@ std::optional<InterpResult> ProgramRunner::run_block(const Block& block, std::ve
             current.program_number = static_cast<std::int64_t>(block.words.front().value);
             return std::nullopt;
         }
-        if (frames_.size() == 1) return end_of_main();
+        if (frames_.size() == 1) return finish_main(pending);
         return InterpResult(alarm_at(block, 1, alarm::format,
                                      fmt::format("program O{} runs into the next program without M99",
                                                  current.program_number)));

@@ -73,6 +73,8 @@ private:
     std::optional<Diagnostic> skip_past_end(const Block& block, int loop);
     [[nodiscard]] std::optional<Diagnostic> condition(const Block& block, bool& holds);
     [[nodiscard]] InterpResult end_of_main() const;
+    //! end_of_main(), and on a clean end the moves cutter compensation still holds go out first.
+    [[nodiscard]] InterpResult finish_main(std::vector<Move>& pending);
 
     // runner_calls.cpp: G65, G66/G67, M98, M99.
     std::optional<InterpResult> run_nc_block(const Block& block, std::vector<Move>& pending);

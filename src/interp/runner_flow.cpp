@@ -109,6 +109,14 @@ std::optional<Diagnostic> ProgramRunner::end_loop(const Block& block) {
     return std::nullopt;
 }
 
+InterpResult ProgramRunner::finish_main(std::vector<Move>& pending) {
+    InterpResult result = end_of_main();
+    if (std::holds_alternative<ProgramEnd>(result)) {
+        if (auto error = executor_.end_program(pending)) return *error;
+    }
+    return result;
+}
+
 InterpResult ProgramRunner::end_of_main() const {
     // The main program ends (end of file, next O program, closing '%') inside a loop whose
     // condition held: its END is missing, as much as when the condition fails at the start.

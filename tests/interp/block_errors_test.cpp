@@ -17,9 +17,9 @@ TEST(BlockErrors, NegativeOrOddGCodeIsUnknown) {
 }
 
 TEST(BlockErrors, UnsupportedGCode) {
-    Diagnostic d = error_of("G0 X1 G41\n");
+    Diagnostic d = error_of("G0 X1 G12\n");
     EXPECT_EQ(where(d), "unsupported-gcode 1:7");
-    EXPECT_EQ(d.message, "G41 is not supported");
+    EXPECT_EQ(d.message, "G12 is not supported");
     EXPECT_EQ(error_of("G92.2\n").message, "G92.2 is not supported");
     EXPECT_EQ(error_where("G43.4 H1\n"), "unsupported-gcode 1:1");
     EXPECT_EQ(error_where("G81.1 X1 Y1 Z-1 R1\n"), "unsupported-gcode 1:1");

@@ -75,6 +75,13 @@ struct SpindleConfig {
     double ripple_phase_deg = 0;  //!< deg, the ripple's phase at the index
 };
 
+//! Fanuc's cutter compensation start-up types (parameter SUP): where the start-up block ends on
+//! an outside corner.
+enum class CompStartup {
+    type_b,  //!< r perpendicular to the start-up block, then the corner as between any two blocks
+    type_a   //!< r perpendicular to the next block's start: no path around the corner
+};
+
 struct MachineConfig {
     std::string name;
     double servo_period_s = 0.001;  //!< s, trajectory sampling period
@@ -87,6 +94,7 @@ struct MachineConfig {
     std::vector<int> laser_off_mcodes;
     DecimalPointInput decimal_point_input = DecimalPointInput::calculator;
     ProfileKind profile = ProfileKind::scurve;
+    CompStartup cutter_comp_startup = CompStartup::type_b;  //!< `cutter_comp_startup = "type_a"`
     std::vector<AxisConfig> axes;   //!< in the order the config lists them
     SpindleConfig spindle;
     //! The tool table (`tools = "FILE"` in [machine], or `--tools FILE`); empty when none given.

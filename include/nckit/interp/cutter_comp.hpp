@@ -1,0 +1,87 @@
+#pragma once
+// Cutter radius compensation (G40/G41/G42): turns the programmed contour into the path of the
+// tool's centre, r to the left or right of it. Moves go in as the interpreter makes them and
+// come out compensated, one planar move late: where a move ends depends on the next one (the
+// corner between them), so the last planar move and everything after it (moves off the plane,
+// I/O, dwells) are held until the next planar move settles the corner.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "nckit/core/machine.hpp"
+#include "nckit/core/source_location.hpp"
+#include "nckit/interp/move.hpp"
+
+namespace nckit {
+
+namespace interp::comp {
+struct Segment;
+}
+
+enum class CompSide { left, right };  // G41, G42: the tool's side looking along the motion
+
+//! Why the compensated path cannot be made; `where` is the block it is about.
+struct CompError {
+    SourceLocation where;
+    std::string code;     //!< "cutter-comp" or "cutter-gouge"
+    std::string message;  //!< one sentence, lower case
+};
+
+class CutterCompensator {
+public:
+    explicit CutterCompensator(CompStartup startup = CompStartup::type_b) : startup_(startup) {}
+
+    //! Something is on, held, or the move after G40 is still to come: moves must go through add().
+    [[nodiscard]] bool engaged() const { return mode_ != Mode::off; }
+    //! G41/G42 is in effect (from the G41/G42 block to the G40 block).
+    [[nodiscard]] bool on() const { return mode_ == Mode::waiting || mode_ == Mode::on; }
+
+    //! G41/G42 with radius r (> 0, mm): the next move in `plane` starts the compensation.
+    void start(CompSide side, double radius_mm, Plane plane);
+    //! G40: the held move ends r from the contour, perpendicular to its end, and goes out; the
+    //! next move runs straight from there to its programmed end point (it must be a line).
+    [[nodiscard]] std::optional<CompError> cancel(std::vector<Move>& out);
+    //! One programmed move (or event): what is settled is appended to `out`.
+    [[nodiscard]] std::optional<CompError> add(Move move, std::vector<Move>& out);
+    //! End of program: as G40, then nothing is left waiting for an exit move.
+    [[nodiscard]] std::optional<CompError> finish(std::vector<Move>& out);
+
+private:
+    enum class Mode { off, waiting, on, exiting };
+
+    //! The held planar move as programmed in the plane (for the corner with the next move).
+    struct Programmed {
+        bool arc = false;
+        double start[2]{};
+        double end[2]{};
+        double center[2]{};
+        int turn = 0;            //!< arcs: +1 counter-clockwise (G3), -1 clockwise (G2)
+        double sweep_rad = 0;    //!< arcs: programmed sweep, turns included
+        bool rapid = false;
+    };
+
+    std::optional<CompError> start_up(Move move, std::vector<Move>& out);
+    std::optional<CompError> next_planar(Move move, std::vector<Move>& out);
+    std::optional<CompError> release(std::vector<Move>& out);  //!< held move keeps its end
+    std::optional<CompError> check_held(const SourceLocation& next) const;
+    std::optional<CompError> check_clearance(const interp::comp::Segment& element, const SourceLocation& where,
+                                             const char* which) const;
+    void hold_off_plane(Move move);
+    [[nodiscard]] bool moves_in_plane(const Move& move) const;
+    [[nodiscard]] CompError error(const SourceLocation& where, std::string code, std::string message) const;
+
+    CompStartup startup_;
+    Mode mode_ = Mode::off;
+    int side_ = 1;          //!< +1 left (G41), -1 right (G42)
+    double radius_mm_ = 0;
+    Plane plane_ = Plane::xy;
+    AxisVector tool_;       //!< where the tool is after everything held, mm / deg
+    Programmed programmed_; //!< the held planar move as programmed
+    Programmed before_;     //!< the planar move before it, as programmed
+    bool has_before_ = false;  //!< before_ is a contour move (not the start-up move)
+    bool held_start_up_ = false;  //!< the held move is the start-up block
+    bool leave_from_tool_ = false;  //!< G41/G42 came before the exit move after G40
+    std::vector<Move> held_;      //!< [0]: the held planar move, compensated; then what followed it
+};
+
+}  // namespace nckit

@@ -1,0 +1,215 @@
+// The compensation state machine: off → waiting (G41/G42 given, no move in the plane yet) →
+// on (one planar move held) → exiting (G40 given, the next move leaves the contour) → off.
+#include "nckit/interp/cutter_comp.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "cutter_comp_geometry.hpp"
+#include "nckit/interp/arc_geometry.hpp"
+
+namespace nckit {
+
+using interp::comp::Segment;
+using interp::comp::Vec2;
+
+namespace {
+
+// Events and off-plane moves held behind one planar move; a program that piles up more than
+// this while compensation is on has lost its contour.
+constexpr std::size_t max_held = 100000;
+
+Vec2 in_plane(const AxisVector& v, PlaneAxes p) { return {v[p.first], v[p.second]}; }
+void set_in_plane(AxisVector& v, PlaneAxes p, Vec2 point) {
+    v[p.first] = point.x;
+    v[p.second] = point.y;
+}
+
+}  // namespace
+
+CompError CutterCompensator::error(const SourceLocation& where, std::string code, std::string message) const {
+    return CompError{where, std::move(code), std::move(message)};
+}
+
+void CutterCompensator::start(CompSide side, double radius_mm, Plane plane) {
+    // G41 again before the exit move: the tool is still beside the old contour, and the next
+    // move leaves from there.
+    leave_from_tool_ = mode_ == Mode::exiting;
+    mode_ = Mode::waiting;
+    side_ = side == CompSide::left ? 1 : -1;
+    radius_mm_ = radius_mm;
+    plane_ = plane;
+    held_.clear();
+    held_start_up_ = false;
+    has_before_ = false;
+}
+
+bool CutterCompensator::moves_in_plane(const Move& move) const {
+    if (std::holds_alternative<Arc>(move.what)) return true;
+    const auto* line = std::get_if<Line>(&move.what);
+    if (line == nullptr) return false;
+    PlaneAxes p = plane_axes(plane_);
+    // Exact comparison, as LinuxCNC: any plane motion at all makes a corner.
+    return line->from[p.first] != line->to[p.first] || line->from[p.second] != line->to[p.second];
+}
+
+std::optional<CompError> CutterCompensator::add(Move move, std::vector<Move>& out) {
+    const bool is_line = std::holds_alternative<Line>(move.what);
+    const bool is_arc = std::holds_alternative<Arc>(move.what);
+    if ((mode_ == Mode::waiting || mode_ == Mode::on) && std::holds_alternative<SyncMove>(move.what)) {
+        return error(move.where, "cutter-comp", "threading (G32/G33) is not allowed with cutter compensation on");
+    }
+    switch (mode_) {
+        case Mode::off:
+            out.push_back(std::move(move));
+            return std::nullopt;
+        case Mode::exiting:
+            if (is_arc) {
+                return error(move.where, "cutter-comp",
+                             "the move after G40 must be a straight line (G0/G1), not an arc");
+            }
+            if (auto* line = std::get_if<Line>(&move.what)) {
+                line->from = tool_;  // from r beside the contour to the programmed point
+                mode_ = Mode::off;
+            } else if (auto* sync = std::get_if<SyncMove>(&move.what)) {
+                sync->from = tool_;
+                mode_ = Mode::off;
+            }
+            out.push_back(std::move(move));
+            return std::nullopt;
+        case Mode::waiting:
+            if (is_arc) {
+                return error(move.where, "cutter-comp",
+                             "cutter compensation cannot start on an arc: start it with a G0/G1 move in the plane");
+            }
+            if (is_line && moves_in_plane(move)) return start_up(std::move(move), out);
+            if (leave_from_tool_) {
+                if (auto* line = std::get_if<Line>(&move.what)) {
+                    line->from = tool_;
+                    leave_from_tool_ = false;
+                }
+            }
+            out.push_back(std::move(move));
+            return std::nullopt;
+        case Mode::on:
+            if (held_.size() >= max_held) {
+                return error(move.where, "cutter-comp",
+                             fmt::format("more than {} blocks without a move in the plane while cutter "
+                                         "compensation is on", max_held));
+            }
+            if (moves_in_plane(move)) return next_planar(std::move(move), out);
+            if (is_line) {
+                hold_off_plane(std::move(move));
+            } else {
+                held_.push_back(std::move(move));
+            }
+            return std::nullopt;
+    }
+    return std::nullopt;
+}
+
+std::optional<CompError> CutterCompensator::start_up(Move move, std::vector<Move>& out) {
+    (void)out;
+    auto& line = std::get<Line>(move.what);
+    PlaneAxes p = plane_axes(plane_);
+    Vec2 from = in_plane(line.from, p);
+    Vec2 to = in_plane(line.to, p);
+    double distance = interp::comp::length(to - from);
+    if (distance <= radius_mm_) {
+        return error(move.where, "cutter-comp",
+                     fmt::format("the start-up move is {:.4f} mm long in the plane, not longer than the tool "
+                                 "radius {:.4f} mm", distance, radius_mm_));
+    }
+    Vec2 normal = static_cast<double>(side_) * interp::comp::left_normal(interp::comp::unit(to - from));
+    set_in_plane(line.to, p, to + radius_mm_ * normal);
+    if (leave_from_tool_) line.from = tool_;  // the geometry stays the programmed one, as LinuxCNC
+    leave_from_tool_ = false;
+    programmed_ = Programmed{};
+    programmed_.start[0] = from.x;
+    programmed_.start[1] = from.y;
+    programmed_.end[0] = to.x;
+    programmed_.end[1] = to.y;
+    programmed_.rapid = line.rapid;
+    tool_ = line.to;
+    held_.clear();
+    held_.push_back(std::move(move));
+    held_start_up_ = true;
+    mode_ = Mode::on;
+    return std::nullopt;
+}
+
+void CutterCompensator::hold_off_plane(Move move) {
+    auto& line = std::get<Line>(move.what);
+    PlaneAxes p = plane_axes(plane_);
+    Vec2 at = in_plane(tool_, p);
+    set_in_plane(line.from, p, at);
+    set_in_plane(line.to, p, at);
+    tool_ = line.to;
+    held_.push_back(std::move(move));
+}
+
+std::optional<CompError> CutterCompensator::check_held(const SourceLocation& next) const {
+    const Move& held = held_.front();
+    PlaneAxes p = plane_axes(plane_);
+    auto near_line = [&] { return next.line != 0 ? fmt::format(" (corner with line {})", next.line) : std::string(); };
+    if (const auto* line = std::get_if<Line>(&held.what)) {
+        Vec2 programmed{programmed_.end[0] - programmed_.start[0], programmed_.end[1] - programmed_.start[1]};
+        Vec2 actual = in_plane(line->to, p) - in_plane(line->from, p);
+        if (interp::comp::dot(programmed, actual) < 0) {
+            return error(held.where, "cutter-gouge",
+                         fmt::format("cutter compensation would gouge: the tool radius {:.4f} mm is too large "
+                                     "for this move, the compensated path runs backwards{}",
+                                     radius_mm_, near_line()));
+        }
+        return std::nullopt;
+    }
+    const auto& arc = std::get<Arc>(held.what);
+    double sweep = arc_sweep_rad(arc);
+    if (sweep > programmed_.sweep_rad + interp::comp::corner_tolerance_rad) {
+        return error(held.where, "cutter-gouge",
+                     fmt::format("cutter compensation would gouge: the tool radius {:.4f} mm is too large "
+                                 "for this arc, its compensated path runs past its end{}",
+                                 radius_mm_, near_line()));
+    }
+    return std::nullopt;
+}
+
+std::optional<CompError> CutterCompensator::release(std::vector<Move>& out) {
+    if (held_.empty()) return std::nullopt;
+    if (auto e = check_held(SourceLocation{})) return e;
+    if (has_before_ && !held_start_up_) {
+        Segment before;
+        before.arc = before_.arc;
+        before.start = {before_.start[0], before_.start[1]};
+        before.end = {before_.end[0], before_.end[1]};
+        before.center = {before_.center[0], before_.center[1]};
+        before.turn = before_.turn;
+        if (auto e = check_clearance(before, held_.front().where, "the block before it")) return e;
+    }
+    for (Move& m : held_) out.push_back(std::move(m));
+    held_.clear();
+    held_start_up_ = false;
+    return std::nullopt;
+}
+
+std::optional<CompError> CutterCompensator::cancel(std::vector<Move>& out) {
+    if (mode_ == Mode::waiting) {
+        mode_ = Mode::off;
+        return std::nullopt;
+    }
+    if (mode_ != Mode::on) return std::nullopt;
+    if (auto e = release(out)) return e;
+    mode_ = Mode::exiting;
+    return std::nullopt;
+}
+
+std::optional<CompError> CutterCompensator::finish(std::vector<Move>& out) {
+    if (mode_ == Mode::on) {
+        if (auto e = release(out)) return e;
+    }
+    mode_ = Mode::off;
+    return std::nullopt;
+}
+
+}  // namespace nckit

@@ -1,0 +1,66 @@
+#pragma once
+// Plane geometry of cutter radius compensation: offsets of lines and arcs, the kind of corner
+// two of them make for a tool on one side, and where their offsets meet in an inside corner.
+// Coordinates are the plane's (first, second) axes; "left" is counter-clockwise from the motion.
+#include <cmath>
+#include <optional>
+
+namespace nckit::interp::comp {
+
+struct Vec2 {
+    double x = 0;
+    double y = 0;
+};
+inline Vec2 operator+(Vec2 a, Vec2 b) { return {a.x + b.x, a.y + b.y}; }
+inline Vec2 operator-(Vec2 a, Vec2 b) { return {a.x - b.x, a.y - b.y}; }
+inline Vec2 operator*(double k, Vec2 a) { return {k * a.x, k * a.y}; }
+inline double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
+inline double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
+inline double length(Vec2 a) { return std::hypot(a.x, a.y); }
+inline Vec2 left_normal(Vec2 a) { return {-a.y, a.x}; }
+inline Vec2 unit(Vec2 a) {
+    double l = length(a);
+    return l > 0 ? (1.0 / l) * a : Vec2{};
+}
+
+//! A programmed or compensated element in the plane.
+struct Segment {
+    bool arc = false;
+    Vec2 start;
+    Vec2 end;
+    Vec2 center;   //!< arcs only
+    int turn = 0;  //!< arcs: +1 counter-clockwise, -1 clockwise
+};
+
+//! Unit tangent of the motion at the start and at the end.
+[[nodiscard]] Vec2 start_tangent(const Segment& s);
+[[nodiscard]] Vec2 end_tangent(const Segment& s);
+
+//! side: +1 left (G41), -1 right (G42). An arc is cut from inside when it turns toward the tool.
+[[nodiscard]] inline bool tool_inside(const Segment& arc, int side) { return side * arc.turn > 0; }
+
+//! The segment moved r to `side`: a line shifts along its normal, an arc keeps its centre and
+//! its radius grows or shrinks by r. Nothing when an inside arc's radius is not larger than r.
+[[nodiscard]] std::optional<Segment> offset(const Segment& s, int side, double r);
+
+enum class Corner { tangent, outside, inside };
+
+//! Corners within this angle of tangent are taken as tangent, as LinuxCNC does (rad).
+inline constexpr double corner_tolerance_rad = 0.05;
+
+//! The corner the tool meets going from a to b (which start where a ends). A reversal is an
+//! outside corner, except where the tool follows an arc on its outside into it (b an arc, or
+//! a line after such an arc): then the tool stays on its side of the reversal, as LinuxCNC does.
+[[nodiscard]] Corner classify(const Segment& a, const Segment& b, int side);
+
+//! Where the offset elements a_off and b_off cross nearest the programmed corner; nothing when
+//! they do not cross (the tool cannot reach into the corner without cutting the contour).
+[[nodiscard]] std::optional<Vec2> inside_corner(const Segment& a_off, const Segment& b_off, Vec2 corner);
+
+//! Shortest distance from p to the element (a line segment, or an arc between its ends).
+[[nodiscard]] double distance_to(Vec2 p, const Segment& s);
+
+//! Angle an arc sweeps from `from` to `to` about `center` in direction turn, rad, in (0, 2π].
+[[nodiscard]] double sweep_rad(Vec2 from, Vec2 to, Vec2 center, int turn);
+
+}  // namespace nckit::interp::comp

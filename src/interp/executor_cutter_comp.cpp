@@ -1,0 +1,122 @@
+// G40/G41/G42 (and G41.1/G42.1) in the executor: the checks a block passes, the radius its D
+// word gives, and the hand-over of the block's moves to the CutterCompensator, which holds one
+// planar move back until the next one settles the corner between them.
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "executor.hpp"
+
+namespace nckit::interp {
+
+namespace {
+
+bool starts_comp(GCode code) { return code == g(41) || code == g(42) || code == g(41, 1) || code == g(42, 1); }
+
+Diagnostic to_diagnostic(const CompError& e) { return error_at(e.where, e.code, e.message); }
+
+}  // namespace
+
+bool Executor::block_starts_comp() const { return starts_comp(words_.group(ModalGroup::cutter_comp)); }
+
+std::optional<double> Executor::tool_radius_mm(int d_number) const { return tools_.radius_mm(d_number); }
+
+std::optional<Diagnostic> Executor::check_cutter_comp() {
+    const GCode code = words_.group(ModalGroup::cutter_comp);
+    const std::uint32_t code_column = words_.group_column(ModalGroup::cutter_comp);
+    if (modal_.cutter_comp != 0) {
+        // What LinuxCNC refuses while compensation is on, and what would break the contour.
+        auto refuse = [&](std::uint32_t column, const std::string& what) {
+            return error(column, "cutter-comp", fmt::format("{} with cutter compensation on: give G40 first", what));
+        };
+        if (starts_comp(code)) return refuse(code_column, fmt::format("G{:g}", code / 10.0));
+        if (GCode p = words_.group(ModalGroup::plane); p >= 0) {
+            Plane plane = p == g(17) ? Plane::xy : p == g(18) ? Plane::zx : Plane::yz;
+            if (plane != modal_.plane) return refuse(words_.group_column(ModalGroup::plane), "changing the plane");
+        }
+        const GCode non_modal = words_.group(ModalGroup::non_modal);
+        const std::uint32_t nm_column = words_.group_column(ModalGroup::non_modal);
+        if (non_modal == g(28) || non_modal == g(30)) return refuse(nm_column, fmt::format("G{}", non_modal / 10));
+        if (non_modal == g(31)) return refuse(nm_column, "G31 probing");
+        for (std::size_t i = 0; i < words_.mcode_count; ++i) {
+            if (words_.mcodes[i].code == 6) return refuse(words_.mcodes[i].column, "M6 tool change");
+        }
+        if (is_drilling_cycle(motion_) && block_has_axis_words()) return refuse(motion_column(), "a drilling cycle");
+        if (non_modal == g(53)) return refuse(nm_column, "G53");
+        if (non_modal == g(92) || non_modal == g(92, 1) || non_modal == g(52) || non_modal == g(10) ||
+            (non_modal == g(50) && block_has_axis_words())) {
+            return refuse(nm_column, "changing coordinate offsets");
+        }
+        if (GCode w = words_.group(ModalGroup::work_system); w >= 0 && static_cast<std::size_t>(w / 10 - 54) != modal_.work_system) {
+            return refuse(words_.group_column(ModalGroup::work_system), "changing the work coordinate system");
+        }
+    }
+    if (!starts_comp(code)) return std::nullopt;
+
+    comp_side_ = (code == g(41) || code == g(41, 1)) ? CompSide::left : CompSide::right;
+    const Word* d = words_.word('D');
+    if (code == g(41, 1) || code == g(42, 1)) {
+        if (d == nullptr) {
+            return error(code_column, "missing-word", fmt::format("G{:g} needs D, the tool diameter", code / 10.0));
+        }
+        comp_radius_mm_ = offset_value(*d) / 2.0;
+    } else {
+        int number = modal_.tool.d_number;
+        if (d != nullptr) {
+            if (d->value != std::floor(d->value) || d->value < 0 || d->value > 99999999) {
+                return error(d->column, "bad-value", "D must be a tool offset number: a whole number, 0 or more");
+            }
+            number = static_cast<int>(d->value);
+        }
+        if (number == 0) {
+            return error(d != nullptr ? d->column : code_column, "cutter-comp",
+                         fmt::format("G{:g} with D0: D0 is no offset, give the tool's offset number", code / 10.0));
+        }
+        auto radius = tool_radius_mm(number);
+        if (!radius) {
+            return error(d != nullptr ? d->column : code_column, "unknown-tool",
+                         tools_.empty() ? fmt::format("D{} needs a tool table (--tools FILE or tools = \"FILE\")", number)
+                                        : fmt::format("D{} has no entry in the tool table", number));
+        }
+        comp_radius_mm_ = *radius;
+    }
+    // A negative offset cuts on the other side, as on Fanuc and LinuxCNC controls.
+    if (comp_radius_mm_ < 0) {
+        comp_radius_mm_ = -comp_radius_mm_;
+        comp_side_ = comp_side_ == CompSide::left ? CompSide::right : CompSide::left;
+    }
+    return std::nullopt;
+}
+
+std::optional<Diagnostic> Executor::compensate(std::vector<Move>& out, std::size_t first, bool program_end) {
+    const GCode code = words_.group(ModalGroup::cutter_comp);
+    if (code < 0 && !comp_.engaged()) {
+        if (program_end) modal_.cutter_comp = 0;
+        return std::nullopt;
+    }
+    std::vector<Move> block_moves(std::make_move_iterator(out.begin() + static_cast<std::ptrdiff_t>(first)),
+                                  std::make_move_iterator(out.end()));
+    out.resize(first);
+    if (code == g(40)) {
+        modal_.cutter_comp = 0;
+        if (auto e = comp_.cancel(out)) return to_diagnostic(*e);
+    } else if (starts_comp(code)) {
+        modal_.cutter_comp = code / 10;
+        // A zero radius compensates nothing: the moves go out as programmed.
+        if (comp_radius_mm_ > 0) comp_.start(comp_side_, comp_radius_mm_, modal_.plane);
+    }
+    for (Move& move : block_moves) {
+        if (auto e = comp_.add(std::move(move), out)) return to_diagnostic(*e);
+    }
+    if (program_end) return end_program(out);
+    return std::nullopt;
+}
+
+std::optional<Diagnostic> Executor::end_program(std::vector<Move>& out) {
+    // M2/M30 and the end of the program reset to G40, as a control's reset does.
+    modal_.cutter_comp = 0;
+    if (auto e = comp_.finish(out)) return to_diagnostic(*e);
+    return std::nullopt;
+}
+
+}  // namespace nckit::interp
