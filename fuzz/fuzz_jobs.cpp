@@ -23,7 +23,7 @@ extern "C" int LLVMFuzzerTestOneInput(const unsigned char* data, std::size_t siz
             break;
         }
         default: {
-            Result<PistonJob> job = parse_piston_job(text, "fuzz.toml");
+            Result<cam::PistonJob> job = cam::parse_piston_job(text, "fuzz.toml");
             fuzz::require(job.ok() || !job.diagnostics().empty(), "piston: refused without a diagnostic");
             break;
         }

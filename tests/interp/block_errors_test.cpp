@@ -53,7 +53,7 @@ TEST(BlockErrors, NegativeOrOddMCodeIsABadValue) {
 TEST(BlockErrors, CodeWordsOutOfRangeAreBadValues) {
     EXPECT_EQ(error_where("M3000000000\n"), "bad-value 1:1");
     EXPECT_EQ(error_where("T123456789\n"), "bad-value 1:1");
-    EXPECT_EQ(error_where("N1.5 G0 X1\n"), "bad-value 1:1");
+    EXPECT_EQ(error_where("N1.5 G0 X1\n"), "macro-alarm 1:1");  // N must be a whole number (alarm 114)
     EXPECT_EQ(error_where("G0 X1 T-1\n"), "bad-value 1:7");
     EXPECT_EQ(error_where("G1000 X1\n"), "unknown-gcode 1:1");
 }
