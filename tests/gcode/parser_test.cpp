@@ -186,8 +186,7 @@ TEST(Parser, PercentLineIsATapeMark) {
     }
 }
 
-TEST(Parser, PercentWithWordsIsAnError) {
-    EXPECT_EQ(error("%G0"), "syntax 1: unexpected character '%'");
+TEST(Parser, PercentAfterWordsIsAnError) {
     EXPECT_EQ(error("G0 %"), "syntax 4: unexpected character '%'");
 }
 

@@ -135,6 +135,11 @@ def main() -> int:
         for program in programs:
             if args.names and program.name not in args.names and program.stem not in args.names:
                 continue
+            if "nckit-tools:" in program.read_text(errors="replace"):
+                # The plug-in takes no tool table yet (docs/linuxcnc-plugin.md): such programs are
+                # listed, not compared.
+                print(f"skip {program.name}: needs a tool table, which the plug-in does not read yet")
+                continue
             ok, text = compare_one(args, program, library)
             print(text, flush=True)
             results.append(ok)
