@@ -180,6 +180,16 @@ std::optional<Diagnostic> Executor::drill_hole(const HolePlan& hole, std::vector
         push(out, io);
     };
     const int turning = modal_.spindle.direction < 0 ? 4 : 3;
+    // Boring past the wall (G76, G87): spindle oriented (M19), the tip moved off the wall by Q,
+    // a rapid to `level`, back on centre, and the spindle turning again.
+    auto oriented_rapid = [&](double level) -> std::optional<Diagnostic> {
+        spindle(19);
+        if (auto e = shift(cycle.q_mm)) return e;
+        if (auto e = go(true, level)) return e;
+        if (auto e = shift(-cycle.q_mm)) return e;
+        spindle(turning);
+        return std::nullopt;
+    };
     if (motion_ != g(87) && position_[d] != hole.r_mm) {
         if (auto e = go(true, hole.r_mm)) return e;
     }
@@ -230,28 +240,14 @@ std::optional<Diagnostic> Executor::drill_hole(const HolePlan& hole, std::vector
             // Fine boring: orient the spindle, move the tip off the wall by Q, retract, move back.
             if (auto e = go(false, hole.bottom_mm)) return e;
             dwell();
-            spindle(19);
-            if (auto e = shift(cycle.q_mm)) return e;
-            if (auto e = go(true, hole.clear_mm)) return e;
-            if (auto e = shift(-cycle.q_mm)) return e;
-            spindle(turning);
-            return std::nullopt;
+            return oriented_rapid(hole.clear_mm);
         case g(87):
             // Back boring: oriented and shifted down through the bore to R (below the part),
             // back on centre, bore upwards to Z, then out the same way to the initial level.
-            spindle(19);
-            if (auto e = shift(cycle.q_mm)) return e;
-            if (auto e = go(true, hole.r_mm)) return e;
-            if (auto e = shift(-cycle.q_mm)) return e;
-            spindle(turning);
+            if (auto e = oriented_rapid(hole.r_mm)) return e;
             if (auto e = go(false, hole.bottom_mm)) return e;
             dwell();
-            spindle(19);
-            if (auto e = shift(cycle.q_mm)) return e;
-            if (auto e = go(true, hole.clear_mm)) return e;
-            if (auto e = shift(-cycle.q_mm)) return e;
-            spindle(turning);
-            return std::nullopt;
+            return oriented_rapid(hole.clear_mm);
         default:
             return std::nullopt;
     }

@@ -64,6 +64,23 @@ TEST(DrillCycles, TappingReversesTheSpindle) {
                      "G1 X0.0000 Y0.0000 Z5.0000 F100.0000", "M3"}));
 }
 
+TEST(DrillCycles, FineBoringOrientsAndLeavesTheWallByQ) {
+    EXPECT_EQ(texts("S800 M3\nG0 Z20\nG98 G76 X10 Z-12 R2 Q0.5 P500 F100\n"),
+              (Texts{"S800", "M3", "G0 X0.0000 Y0.0000 Z20.0000", "G0 X10.0000 Y0.0000 Z20.0000",
+                     "G0 X10.0000 Y0.0000 Z2.0000", "G1 X10.0000 Y0.0000 Z-12.0000 F100.0000", "G4 P0.5000",
+                     "M19", "G0 X10.5000 Y0.0000 Z-12.0000", "G0 X10.5000 Y0.0000 Z20.0000",
+                     "G0 X10.0000 Y0.0000 Z20.0000", "M3"}));
+}
+
+TEST(DrillCycles, BackBoringGoesDownShiftedAndBoresUpwards) {
+    EXPECT_EQ(texts("S800 M3\nG0 Z30\nG98 G87 X40 Z-5 R-20 Q1 P200 F80\n"),
+              (Texts{"S800", "M3", "G0 X0.0000 Y0.0000 Z30.0000", "G0 X40.0000 Y0.0000 Z30.0000", "M19",
+                     "G0 X41.0000 Y0.0000 Z30.0000", "G0 X41.0000 Y0.0000 Z-20.0000",
+                     "G0 X40.0000 Y0.0000 Z-20.0000", "M3", "G1 X40.0000 Y0.0000 Z-5.0000 F80.0000",
+                     "G4 P0.2000", "M19", "G0 X41.0000 Y0.0000 Z-5.0000", "G0 X41.0000 Y0.0000 Z30.0000",
+                     "G0 X40.0000 Y0.0000 Z30.0000", "M3"}));
+}
+
 TEST(DrillCycles, MalformedCyclesAreLocated) {
     EXPECT_EQ(error_where("G0 Z5\nG81 X1 Z-1 F60\n"), "missing-word 2:1");   // no R
     EXPECT_EQ(error_where("G0 Z5\nG81 X1 R1 F60\n"), "missing-word 2:1");    // no Z
