@@ -179,13 +179,7 @@ std::optional<CompError> CutterCompensator::release(std::vector<Move>& out) {
     if (held_.empty()) return std::nullopt;
     if (auto e = check_held(SourceLocation{})) return e;
     if (has_before_ && !held_start_up_) {
-        Segment before;
-        before.arc = before_.arc;
-        before.start = {before_.start[0], before_.start[1]};
-        before.end = {before_.end[0], before_.end[1]};
-        before.center = {before_.center[0], before_.center[1]};
-        before.turn = before_.turn;
-        if (auto e = check_clearance(before, held_.front().where, "the block before it")) return e;
+        if (auto e = check_clearance(before_.segment(), held_.front().where, "the block before it")) return e;
     }
     for (Move& m : held_) out.push_back(std::move(m));
     held_.clear();

@@ -107,14 +107,19 @@ std::optional<CompError> CutterCompensator::check_clearance(const Segment& eleme
     return std::nullopt;
 }
 
+Segment CutterCompensator::Programmed::segment() const {
+    Segment s;
+    s.arc = arc;
+    s.start = {start[0], start[1]};
+    s.end = {end[0], end[1]};
+    s.center = {center[0], center[1]};
+    s.turn = turn;
+    return s;
+}
+
 std::optional<CompError> CutterCompensator::next_planar(Move move, std::vector<Move>& out) {
     PlaneAxes p = plane_axes(plane_);
-    Segment a;
-    a.arc = programmed_.arc;
-    a.start = {programmed_.start[0], programmed_.start[1]};
-    a.end = {programmed_.end[0], programmed_.end[1]};
-    a.center = {programmed_.center[0], programmed_.center[1]};
-    a.turn = programmed_.turn;
+    const Segment a = programmed_.segment();
     Segment b = segment_of(move, p);
     const Vec2 corner = a.end;
 
@@ -162,13 +167,7 @@ std::optional<CompError> CutterCompensator::next_planar(Move move, std::vector<M
         if (auto e = check_clearance(b, move.where, "this block")) return e;
     }
     if (has_before_ && !held_start_up_) {
-        Segment before;
-        before.arc = before_.arc;
-        before.start = {before_.start[0], before_.start[1]};
-        before.end = {before_.end[0], before_.end[1]};
-        before.center = {before_.center[0], before_.center[1]};
-        before.turn = before_.turn;
-        if (auto e = check_clearance(before, move.where, "the block before it")) return e;
+        if (auto e = check_clearance(before_.segment(), move.where, "the block before it")) return e;
     }
     for (std::size_t i = 1; i < held_.size(); ++i) {
         if (auto* line = std::get_if<Line>(&held_[i].what)) {

@@ -58,6 +58,9 @@ private:
         int turn = 0;            //!< arcs: +1 counter-clockwise (G3), -1 clockwise (G2)
         double sweep_rad = 0;    //!< arcs: programmed sweep, turns included
         bool rapid = false;
+
+        //! The same element as the corner geometry takes it.
+        [[nodiscard]] interp::comp::Segment segment() const;
     };
 
     std::optional<CompError> start_up(Move move, std::vector<Move>& out);
