@@ -7,22 +7,14 @@ import subprocess
 import sys
 import tempfile
 
+from cli_checks import check, run_nckit, summary
+
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 MACHINES = ROOT / "examples" / "machines"
-failures = []
-checks = 0
-
-
-def check(condition, what):
-    global checks
-    checks += 1
-    if not condition:
-        failures.append(what)
-        print(f"FAIL {what}")
 
 
 def run(nckit, *args, stdin=None, timeout=120):
-    return subprocess.run([nckit, *map(str, args)], capture_output=True, text=True, timeout=timeout, input=stdin)
+    return run_nckit(nckit, *args, text=True, input=stdin, timeout=timeout)
 
 
 def streaming_steps(nckit, tmp) -> None:
@@ -131,8 +123,7 @@ def main() -> int:
               f"max_velocity = 1e-308 is refused ({r.stderr.strip()})")
 
         streaming_steps(nckit, tmp)
-    print(f"{checks - len(failures)} passed, {len(failures)} failed")
-    return 1 if failures else 0
+    return summary()
 
 
 if __name__ == "__main__":

@@ -12,22 +12,11 @@ import tempfile
 import threading
 import time
 
+from cli_checks import check, summary
+from cli_checks import run_nckit as run
+
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 POCKET = ROOT / "examples" / "01_mill_pocket.ngc"
-failures = []
-checks = 0
-
-
-def check(condition, what):
-    global checks
-    checks += 1
-    if not condition:
-        failures.append(what)
-        print(f"FAIL {what}")
-
-
-def run(nckit, *args, **kwargs):
-    return subprocess.run([nckit, *map(str, args)], capture_output=True, timeout=120, **kwargs)
 
 
 def main() -> int:
@@ -135,8 +124,7 @@ def main() -> int:
         check(r.returncode == 0 and not (tmp / "mill.vars").exists(), "moves leaves the vars file alone")
         r = run(nckit, "moves", vars_program, "--machine", machine, "--save-vars")
         check(r.returncode == 0 and "#500 = 42" in (tmp / "mill.vars").read_text(), "--save-vars writes them")
-    print(f"{checks - len(failures)} passed, {len(failures)} failed")
-    return 1 if failures else 0
+    return summary()
 
 
 if __name__ == "__main__":
