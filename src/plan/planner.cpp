@@ -20,8 +20,6 @@ using plan_detail::WindowSegment;
 
 namespace {
 
-// Moves shorter than this (mm, or deg for rotary-only moves) do not move the machine.
-constexpr double min_length = 1e-9;
 // A trimmed line shorter than this is dropped; the blends on both sides then meet tangentially.
 constexpr double min_trimmed_length = 1e-12;
 
@@ -199,7 +197,7 @@ struct Planner::Impl {
     }
 
     void motion(PathSegment path, double feed_mm_s, bool blendable, PathControl control, const Move& move) {
-        if (!(path.length > min_length)) {
+        if (!(path.length > min_move_length)) {
             if (control.exact_stop) release_pending(0.0);
             return;
         }
@@ -269,7 +267,7 @@ struct Planner::Impl {
             return;
         }
         PathSegment path = make_line(sync.from, sync.to);
-        if (!(path.length > min_length)) return;
+        if (!(path.length > min_move_length)) return;
         const double speed_mm_s = sync.feed.mm_per_rev * spindle.mean_rpm(machine.spindle) / 60.0;
         if (!(speed_mm_s > 0)) {
             diagnostics.push_back(error_at(move.where, "no-feed", "G32/G33 with no lead (F)"));

@@ -12,8 +12,6 @@
 namespace nckit {
 
 namespace {
-// Moves shorter than this get no trajectory piece (the planner's own threshold).
-constexpr double min_length = 1e-9;
 // mm/s: a junction slower than this is a stop.
 constexpr double stop_speed_mm_s = 1e-9;
 }  // namespace
@@ -88,7 +86,7 @@ struct ToolPathRecorder::Impl {
         }
         out.file = file_of(move.where);
         out.line = move.where.line;
-        if (length > min_length) awaiting.push_back(report.moves.size());
+        if (length > min_move_length) awaiting.push_back(report.moves.size());
         report.moves.push_back(out);
         exact_stop.push_back(stops);
     }

@@ -59,6 +59,10 @@ struct DerivativeBounds {
 };
 [[nodiscard]] DerivativeBounds derivative_bounds(const PathSegment& segment);
 
+//! Moves whose measured length is not above this (mm, or deg for rotary-only moves) do not move
+//! the machine: the planner makes no trajectory piece of them.
+inline constexpr double min_move_length = 1e-9;
+
 //! The path length of a displacement: XYZ, else UVW, else ABC in degrees (LinuxCNC's rule).
 [[nodiscard]] double measured_length(const AxisVector& displacement);
 
