@@ -91,7 +91,7 @@ fuzz:
 
 # Differential fuzzing against LinuxCNC's rs274: 500 seeded random programs (CTest runs 20).
 fuzz-linuxcnc: build
-	@flock /tmp/linuxcnc.lock python3 tests/programs/fuzz_linuxcnc.py --count 500 --seed 11
+	@flock /tmp/nckit-linuxcnc.lock python3 tests/programs/fuzz_linuxcnc.py --count 500 --seed 11
 
 clean:
 	@rm -rf build

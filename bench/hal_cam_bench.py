@@ -1,6 +1,6 @@
 """nckit_cam's cost per call in LinuxCNC's halrun, and the example piston with the loop in HAL.
 
-  flock /tmp/linuxcnc.lock python3 bench/hal_cam_bench.py [--nckit build/release/src/nckit] [--calls 1000000]
+  flock /tmp/nckit-linuxcnc.lock python3 bench/hal_cam_bench.py [--nckit build/release/src/nckit] [--calls 1000000]
 
 Cost: the example's spindle (sim_encoder, encoder, 2500 rpm, 360 counts) and Z feeding per turn
 drive nckit-cam.0 in a 66.666 us thread; its `call-ns` pin (the function's own duration by

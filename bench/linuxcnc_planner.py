@@ -21,7 +21,8 @@ canonical motions (STRAIGHT_TRAVERSE / STRAIGHT_FEED / ARC_FEED) that `rs274 -g`
 
 Cleans up on every path (LinuxCNC stopped, temporary folder removed unless --keep), and every
 wait is bounded (--timeout, default 900 s, for the whole run). Only one LinuxCNC can run on a
-machine at a time: this refuses to start while /tmp/linuxcnc.lock exists (after waiting 60 s).
+machine at a time: this holds an flock on /tmp/nckit-linuxcnc.lock (as nckit's tests and manual
+runs do) and refuses to start while LinuxCNC's own /tmp/linuxcnc.lock exists (after waiting 60 s).
 
 LinuxCNC refuses to run as root: as root this sets RTAPI_UID=65534 (nobody) and points
 RTAPI_FIFO_PATH (the path of rtapi_app's master socket itself, not a folder) into a world-writable
@@ -30,6 +31,7 @@ under Debian's /usr/bin/python3, which has the `linuxcnc` module; the rest is pl
 """
 
 import argparse
+import fcntl
 import json
 import os
 import shutil
@@ -43,7 +45,8 @@ import time
 SERVO_PERIOD_S = 0.001
 AXES = ("X", "Y", "Z")
 TRAVEL_MM = 1000.0
-LOCKFILE = "/tmp/linuxcnc.lock"
+LOCKFILE = "/tmp/linuxcnc.lock"  # LinuxCNC's own: it exists while a LinuxCNC runs
+SERIAL_LOCK = "/tmp/nckit-linuxcnc.lock"  # the flock that keeps nckit's LinuxCNC runs one at a time
 SAMPLER_DEPTH = 200000  # FIFO rows (200 s at 1 ms): halsampler drains it continuously
 
 
@@ -161,6 +164,97 @@ JOINTS = 3
 # The DISPLAY: runs inside LinuxCNC under /usr/bin/python3
 # ---------------------------------------------------------------------------------------------
 
+class DisplaySession:
+    """The display side of a headless run, inside LinuxCNC: its status, command and error
+    channels, the errors it reports (appended to result["errors"]), bounded waits, and the
+    sampler recording the commanded positions. tests/linuxcnc_plugin/run_machine.py drives its
+    runs with it too."""
+
+    def __init__(self, linuxcnc, result, run_timeout_s):
+        self.lc = linuxcnc
+        self.s, self.c, self.e = linuxcnc.stat(), linuxcnc.command(), linuxcnc.error_channel()
+        self.result = result
+        self.deadline = time.monotonic() + run_timeout_s
+        self.sampler = None
+        self.samples_out = None
+
+    def poll_errors(self):
+        while True:
+            msg = self.e.poll()
+            if not msg:
+                return
+            kind, text = msg
+            if kind in (self.lc.NML_ERROR, self.lc.OPERATOR_ERROR):
+                self.result["errors"].append(text)
+
+    def wait_for(self, pred, what, limit_s, stop_on_error=True):
+        """Polls until pred() holds; an error LinuxCNC reports ends the wait as a failure unless
+        stop_on_error is False (then pred decides)."""
+        end = min(self.deadline, time.monotonic() + limit_s)
+        while time.monotonic() < end:
+            self.s.poll()
+            self.poll_errors()
+            if stop_on_error and self.result["errors"]:
+                raise RuntimeError(f"LinuxCNC error while waiting for {what}")
+            if pred():
+                return
+            time.sleep(0.005)
+        raise RuntimeError(f"timed out waiting for {what}")
+
+    def machine_on_in_auto(self):
+        """Waits for task, resets the E-stop, switches the machine on and selects auto mode."""
+        lc, s, c = self.lc, self.s, self.c
+        self.result["phase"] = "task up"
+        end = time.monotonic() + 30
+        while True:
+            try:
+                s.poll()
+                if s.task_state:
+                    break
+            except lc.error:
+                pass
+            if time.monotonic() > end:
+                raise RuntimeError("task did not come up in 30 s")
+            time.sleep(0.05)
+
+        self.result["phase"] = "machine on"
+        c.state(lc.STATE_ESTOP_RESET)
+        c.wait_complete(5)
+        c.state(lc.STATE_ON)
+        c.wait_complete(5)
+        self.wait_for(lambda: s.task_state == lc.STATE_ON, "machine on", 10)
+        c.mode(lc.MODE_AUTO)
+        c.wait_complete(5)
+        self.wait_for(lambda: s.task_mode == lc.MODE_AUTO, "auto mode", 10)
+
+    def open_program(self, program):
+        self.result["phase"] = "open"
+        self.c.program_open(program)
+        self.c.wait_complete(30)
+        self.poll_errors()
+        if self.result["errors"]:
+            raise RuntimeError("program_open failed")
+
+    def start_sampling(self, work):
+        """halsampler drains the sampler into work/samples.txt; idle rows before the motion."""
+        self.result["phase"] = "sampling"
+        self.samples_out = open(os.path.join(work, "samples.txt"), "w")
+        self.sampler = subprocess.Popen(["halsampler", "-t"], stdout=self.samples_out,
+                                        stderr=subprocess.DEVNULL)
+        time.sleep(0.2)
+
+    def stop_sampling(self):
+        if self.sampler is not None:
+            self.sampler.send_signal(signal.SIGINT)
+            try:
+                self.sampler.wait(5)
+            except subprocess.TimeoutExpired:
+                self.sampler.kill()
+                self.sampler.wait(5)
+        if self.samples_out is not None:
+            self.samples_out.close()
+
+
 def display_main(argv):
     """LinuxCNC runs `DISPLAY -ini FILE`; the run's settings are in run.json beside FILE."""
     ini = argv[argv.index("-ini") + 1]
@@ -168,81 +262,24 @@ def display_main(argv):
     with open(os.path.join(work, "run.json")) as f:
         run = json.load(f)
     result = {"ok": False, "errors": [], "phase": "start"}
-    sampler = None
-    samples_out = None
+    session = None
     try:
         import linuxcnc
-        s = linuxcnc.stat()
-        c = linuxcnc.command()
-        e = linuxcnc.error_channel()
-        deadline = time.monotonic() + run["run_timeout_s"]
-
-        def poll_errors():
-            while True:
-                msg = e.poll()
-                if not msg:
-                    return
-                kind, text = msg
-                if kind in (linuxcnc.NML_ERROR, linuxcnc.OPERATOR_ERROR):
-                    result["errors"].append(text)
-
-        def wait_for(pred, what, limit_s):
-            end = min(deadline, time.monotonic() + limit_s)
-            while time.monotonic() < end:
-                s.poll()
-                poll_errors()
-                if result["errors"]:
-                    raise RuntimeError(f"LinuxCNC error while waiting for {what}")
-                if pred():
-                    return
-                time.sleep(0.005)
-            raise RuntimeError(f"timed out waiting for {what}")
-
-        result["phase"] = "task up"
-        end = time.monotonic() + 30
-        while True:
-            try:
-                s.poll()
-                if s.task_state:
-                    break
-            except linuxcnc.error:
-                pass
-            if time.monotonic() > end:
-                raise RuntimeError("task did not come up in 30 s")
-            time.sleep(0.05)
-
-        result["phase"] = "machine on"
-        c.state(linuxcnc.STATE_ESTOP_RESET)
-        c.wait_complete(5)
-        c.state(linuxcnc.STATE_ON)
-        c.wait_complete(5)
-        wait_for(lambda: s.task_state == linuxcnc.STATE_ON, "machine on", 10)
-        c.mode(linuxcnc.MODE_AUTO)
-        c.wait_complete(5)
-        wait_for(lambda: s.task_mode == linuxcnc.MODE_AUTO, "auto mode", 10)
-
-        result["phase"] = "open"
-        c.program_open(run["program"])
-        c.wait_complete(30)
-        poll_errors()
-        if result["errors"]:
-            raise RuntimeError("program_open failed")
-
-        result["phase"] = "sampling"
-        samples_out = open(os.path.join(work, "samples.txt"), "w")
-        sampler = subprocess.Popen(["halsampler", "-t"], stdout=samples_out,
-                                   stderr=subprocess.DEVNULL)
-        time.sleep(0.2)  # idle rows before the motion
+        session = DisplaySession(linuxcnc, result, run["run_timeout_s"])
+        s, c = session.s, session.c
+        session.machine_on_in_auto()
+        session.open_program(run["program"])
+        session.start_sampling(work)
 
         result["phase"] = "run"
         t0 = time.monotonic()
         c.auto(linuxcnc.AUTO_RUN, 0)
         # Running = interpreter busy; finished = idle again, queue empty, in position.
-        wait_for(lambda: s.interp_state != linuxcnc.INTERP_IDLE or s.queue > 0
-                 or not s.inpos, "the program to start", 10)
-        wait_for(lambda: s.interp_state == linuxcnc.INTERP_IDLE and s.queue == 0
-                 and s.inpos and s.exec_state == linuxcnc.EXEC_DONE,
-                 "the program to finish", run["run_timeout_s"])
+        session.wait_for(lambda: s.interp_state != linuxcnc.INTERP_IDLE or s.queue > 0
+                         or not s.inpos, "the program to start", 10)
+        session.wait_for(lambda: s.interp_state == linuxcnc.INTERP_IDLE and s.queue == 0
+                         and s.inpos and s.exec_state == linuxcnc.EXEC_DONE,
+                         "the program to finish", run["run_timeout_s"])
         result["wall_s"] = time.monotonic() - t0
         time.sleep(0.2)  # idle rows after the motion
         result["ok"] = True
@@ -250,19 +287,12 @@ def display_main(argv):
     except Exception as ex:  # reported to the parent through display_result.json
         result["errors"].append(f"{type(ex).__name__}: {ex}")
         try:
-            c.abort()
+            session.c.abort()
         except Exception:
             pass
     finally:
-        if sampler is not None:
-            sampler.send_signal(signal.SIGINT)
-            try:
-                sampler.wait(5)
-            except subprocess.TimeoutExpired:
-                sampler.kill()
-                sampler.wait(5)
-        if samples_out is not None:
-            samples_out.close()
+        if session is not None:
+            session.stop_sampling()
         with open(os.path.join(work, "display_result.json"), "w") as f:
             json.dump(result, f)
     # Exiting the display makes the linuxcnc script shut everything down.
@@ -413,6 +443,8 @@ def parent_main(args):
         fail("/usr/bin/python3 (Debian's, with the linuxcnc module) is missing")
     if args.max_velocity <= 0 or args.max_acceleration <= 0:
         fail("--max-velocity and --max-acceleration must be positive")
+    serial_lock = open(SERIAL_LOCK, "a")
+    fcntl.flock(serial_lock, fcntl.LOCK_EX)  # released when the process exits
     if not wait_for_no_lock(60):
         fail(f"another LinuxCNC is running ({LOCKFILE} exists); run comparisons one at a time")
 

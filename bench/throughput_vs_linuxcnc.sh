@@ -59,26 +59,6 @@ script_name=throughput_vs_linuxcnc
 # shellcheck source=bench/best_of.sh
 source "$repo/bench/best_of.sh"
 
-# Untimed sanity check: both must really turn every block into a motion.
-rs_moves=$(cd "$work" && "$rs274" -g "$program" 2>/dev/null | grep -c 'STRAIGHT_FEED(') || true
-nc_moves=$("$nckit" moves "$program" | wc -l) || die "nckit moves failed on $program"
-((rs_moves >= blocks)) || die "rs274 printed $rs_moves feeds for $blocks G1 blocks"
-((nc_moves >= blocks)) || die "nckit printed $nc_moves lines for $blocks G1 blocks"
-
-rs_best=$(best_of "$rs274" -g "$program")
-nc_best=$(best_of "$nckit" moves "$program")
-read -r rs_s rs_kb <<<"$rs_best"
-read -r nc_s nc_kb <<<"$nc_best"
-
-echo "| program | G1 blocks | rs274 -g time (s) | rs274 peak RSS (MB) | nckit moves time (s)" \
-     "| nckit peak RSS (MB) | speed-up |"
-echo "|---|---:|---:|---:|---:|---:|---:|"
-LC_ALL=C awk -v blocks="$blocks" -v runs=$runs \
-  -v rs_s="$rs_s" -v rs_kb="$rs_kb" -v nc_s="$nc_s" -v nc_kb="$nc_kb" \
-  -v label="$([[ $signed4 == 1 ]] && echo ', X Y Z 4 decimals, signed')" 'BEGIN {
-  speed = (nc_s > 0) ? sprintf("%.2fx", rs_s / nc_s) : "n/a (below timer resolution)"
-  printf "| G1 surface raster%s | %d | %.2f | %.1f | %.2f | %.1f | %s |\n",
-         label, blocks, rs_s, rs_kb / 1024, nc_s, nc_kb / 1024, speed
-  printf "\nbest of %d runs each; time ratio rs274/nckit = %s, memory ratio rs274/nckit = %.2f\n",
-         runs, speed, (nc_kb > 0) ? rs_kb / nc_kb : 0
-}'
+label="G1 surface raster"
+if ((signed4)); then label+=", X Y Z 4 decimals, signed"; fi
+moves_vs_rs274 "$program" "$blocks" "$label"

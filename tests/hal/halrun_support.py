@@ -4,7 +4,7 @@ halrun starts rtapi_app (uspace, POSIX threads) and runs a .hal file. As root (C
 wants a fallback user (RTAPI_UID) and a socket path that user can reach (RTAPI_FIFO_PATH, the
 socket file itself inside a world-writable folder); as a plain user neither is needed. halrun
 is given a terminal through `script`. Only one HAL instance may run on a machine at a time: the
-callers hold a lock (CTest RESOURCE_LOCK linuxcnc, or flock /tmp/linuxcnc.lock).
+callers hold a lock (CTest RESOURCE_LOCK linuxcnc, or flock /tmp/nckit-linuxcnc.lock).
 """
 import os
 import shutil

@@ -26,7 +26,7 @@ Checks:
   block moved.
 
 Exit status 0 when every check holds; 1 otherwise, with the reason on stderr. Only one LinuxCNC can
-run on a machine: the run holds an flock on /tmp/linuxcnc.lock (as manual runs do).
+run on a machine: the run holds an flock on /tmp/nckit-linuxcnc.lock (as manual runs do).
 """
 
 import argparse
@@ -36,7 +36,6 @@ import math
 import os
 import re
 import shutil
-import signal
 import subprocess
 import sys
 import tempfile
@@ -49,7 +48,7 @@ import linuxcnc_planner as lp  # noqa: E402  (starting and stopping LinuxCNC, re
 
 SERVO_PERIOD_S = 0.001
 TOL_MM = 1e-4
-LOCKFILE = "/tmp/linuxcnc.lock"
+LOCKFILE = "/tmp/nckit-linuxcnc.lock"  # the flock that keeps nckit's LinuxCNC runs one at a time
 SAMPLER_DEPTH = 200000
 
 
@@ -168,79 +167,28 @@ def display_main(argv):
     with open(os.path.join(work, "run.json")) as f:
         run = json.load(f)
     result = {"finished": False, "errors": [], "phase": "start"}
-    sampler = samples_out = None
+    session = None
     try:
         import linuxcnc
-        s, c, e = linuxcnc.stat(), linuxcnc.command(), linuxcnc.error_channel()
-        deadline = time.monotonic() + run["run_timeout_s"]
-
-        def poll_errors():
-            while True:
-                msg = e.poll()
-                if not msg:
-                    return
-                kind, text = msg
-                if kind in (linuxcnc.NML_ERROR, linuxcnc.OPERATOR_ERROR):
-                    result["errors"].append(text)
-
-        def wait_for(pred, what, limit_s, stop_on_error=True):
-            end = min(deadline, time.monotonic() + limit_s)
-            while time.monotonic() < end:
-                s.poll()
-                poll_errors()
-                if stop_on_error and result["errors"]:
-                    raise RuntimeError(f"LinuxCNC error while waiting for {what}")
-                if pred():
-                    return
-                time.sleep(0.005)
-            raise RuntimeError(f"timed out waiting for {what}")
-
-        result["phase"] = "task up"
-        end = time.monotonic() + 30
-        while True:
-            try:
-                s.poll()
-                if s.task_state:
-                    break
-            except linuxcnc.error:
-                pass
-            if time.monotonic() > end:
-                raise RuntimeError("task did not come up in 30 s")
-            time.sleep(0.05)
-        result["phase"] = "machine on"
-        c.state(linuxcnc.STATE_ESTOP_RESET)
-        c.wait_complete(5)
-        c.state(linuxcnc.STATE_ON)
-        c.wait_complete(5)
-        wait_for(lambda: s.task_state == linuxcnc.STATE_ON, "machine on", 10)
-        c.mode(linuxcnc.MODE_AUTO)
-        c.wait_complete(5)
-        wait_for(lambda: s.task_mode == linuxcnc.MODE_AUTO, "auto mode", 10)
+        session = lp.DisplaySession(linuxcnc, result, run["run_timeout_s"])
+        s, c = session.s, session.c
+        session.machine_on_in_auto()
         c.spindleoverride(run["spindle_override"], 0)
         c.wait_complete(5)
-        result["phase"] = "open"
-        c.program_open(run["program"])
-        c.wait_complete(30)
-        poll_errors()
-        if result["errors"]:
-            raise RuntimeError("program_open failed")
-        result["phase"] = "sampling"
-        samples_out = open(os.path.join(work, "samples.txt"), "w")
-        sampler = subprocess.Popen(["halsampler", "-t"], stdout=samples_out,
-                                   stderr=subprocess.DEVNULL)
-        time.sleep(0.2)
+        session.open_program(run["program"])
+        session.start_sampling(work)
         result["phase"] = "run"
         t0 = time.monotonic()
         c.auto(linuxcnc.AUTO_RUN, 0)
         # An alarm may stop the program at once: errors end the wait, they do not fail it here.
-        wait_for(lambda: s.interp_state != linuxcnc.INTERP_IDLE or s.queue > 0 or not s.inpos
-                 or result["errors"], "the program to start", 10, stop_on_error=False)
-        wait_for(lambda: s.interp_state == linuxcnc.INTERP_IDLE and s.queue == 0 and s.inpos
-                 and s.exec_state == linuxcnc.EXEC_DONE, "the program to finish",
-                 run["run_timeout_s"], stop_on_error=False)
+        session.wait_for(lambda: s.interp_state != linuxcnc.INTERP_IDLE or s.queue > 0 or not s.inpos
+                         or result["errors"], "the program to start", 10, stop_on_error=False)
+        session.wait_for(lambda: s.interp_state == linuxcnc.INTERP_IDLE and s.queue == 0 and s.inpos
+                         and s.exec_state == linuxcnc.EXEC_DONE, "the program to finish",
+                         run["run_timeout_s"], stop_on_error=False)
         result["wall_s"] = time.monotonic() - t0
         time.sleep(0.3)
-        poll_errors()
+        session.poll_errors()
         s.poll()
         result["position"] = list(s.position)
         result["finished"] = True
@@ -248,6 +196,7 @@ def display_main(argv):
     except Exception as ex:
         result["errors"].append(f"{type(ex).__name__}: {ex}")
         try:  # where it stood, for the report
+            s = session.s
             s.poll()
             result["state"] = {k: getattr(s, k) for k in (
                 "task_state", "exec_state", "interp_state", "queue", "inpos", "motion_line",
@@ -256,19 +205,12 @@ def display_main(argv):
         except Exception:
             pass
         try:
-            c.abort()
+            session.c.abort()
         except Exception:
             pass
     finally:
-        if sampler is not None:
-            sampler.send_signal(signal.SIGINT)
-            try:
-                sampler.wait(5)
-            except subprocess.TimeoutExpired:
-                sampler.kill()
-                sampler.wait(5)
-        if samples_out is not None:
-            samples_out.close()
+        if session is not None:
+            session.stop_sampling()
         with open(os.path.join(work, "display_result.json"), "w") as f:
             json.dump(result, f)
     return 0

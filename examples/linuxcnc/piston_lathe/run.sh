@@ -5,7 +5,7 @@
 #   LEARNING=1 run.sh  learning across revolutions on as well as feedforward
 # Needs LinuxCNC (scripts/deps.sh) and the modules where loadrt finds them (cmake --build
 # build/release --target hal-install). One LinuxCNC instance per machine: wrap it in
-# `flock /tmp/linuxcnc.lock` where others may run one.
+# `flock /tmp/nckit-linuxcnc.lock` where others may run one.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 nckit=${1:-$here/../../../build/release/src/nckit}
