@@ -1,4 +1,4 @@
-// The fast tool servo simulation of the oval piston job (reference/piston.md): z 0 .. 50 mm at
+// The fast tool servo simulation of the oval piston job (docs/processes/piston.md): z 0 .. 50 mm at
 // 0.1 mm/rev, 2500 rpm, 360 counts per turn, 20 air turns: 520 turns, 187,201 ticks per run, three
 // runs (uncompensated, feedforward, learning). Timed whole; the profile errors ride along as
 // counters (µm), so one run of this target gives the figures and their cost.

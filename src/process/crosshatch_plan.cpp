@@ -1,4 +1,4 @@
-// The crosshatch speeds, step counts, timer divisors and index rule (reference/crosshatch.md).
+// The crosshatch speeds, step counts, timer divisors and index rule (docs/processes/crosshatch.md).
 #include <algorithm>
 #include <cmath>
 #include <numbers>

@@ -96,7 +96,7 @@ TEST(CamPistonJob, ReadsTheDocumentedSchema) {
     EXPECT_EQ(job->feed_mm_rev, 0.1);
     EXPECT_EQ(job->encoder_counts, 360);
     EXPECT_EQ(job->spindle_ripple, 0.0);
-    // reference/piston.md: E 0.8 at 2500 rpm is 0.2 mm at 83.3 Hz, ≈ 54,800 mm/s² ≈ 5.6 g.
+    // docs/processes/piston.md: E 0.8 at 2500 rpm is 0.2 mm at 83.3 Hz, ≈ 54,800 mm/s² ≈ 5.6 g.
     EXPECT_NEAR(job->demand.stroke_mm, 0.4, 1e-9);
     EXPECT_NEAR(job->demand.stroke_z_mm, 50, 1e-9);
     EXPECT_NEAR(job->demand.acceleration_mm_s2(2500), 54831, 5);
@@ -286,7 +286,7 @@ TEST(CamPistonJobError, ProfileNeedsMoreAccelerationThanTheServoHasAtTheRpm) {
     // 5.6 g at 2500 rpm; at 4000 rpm (4000/2500)² × 5.59 ≈ 14.3 g > 13 g.
     const std::string text = with(base_job, "rpm", "rpm = 4000");
     expect_error(text, "rpm = 4000", 6, "more than the servo's 'max_acceleration_g' = 13; at most 3812 rpm");
-    // E = 2 mm needs ≈ 14 g at 2500 rpm (reference/piston.md): more than 13 g.
+    // E = 2 mm needs ≈ 14 g at 2500 rpm (docs/processes/piston.md): more than 13 g.
     std::string big = with(with(base_job, "ovality_mm", "ovality_mm = 2.0"), "stroke_mm",
                            "stroke_mm = 1.5");
     expect_error(big, "rpm = 2500", 6, "(13.98 g)");

@@ -21,7 +21,7 @@ Formula shape_formula(const std::string& text) {
 }
 
 TEST(CamSectionShape, WorkedNumbersOfTheDrawingRule) {
-    // reference/piston.md: D 89.9, E 0.5.
+    // docs/processes/piston.md: D 89.9, E 0.5.
     const PistonProfile p = constant_profile(89.9, 0.5, SectionShape::ellipse2());
     EXPECT_NEAR(p.radius_mm(0, 0), 44.95, 1e-12);
     EXPECT_NEAR(p.radius_mm(30, 0), 44.8875, 1e-12);
@@ -33,7 +33,7 @@ TEST(CamSectionShape, WorkedNumbersOfTheDrawingRule) {
 }
 
 TEST(CamSectionShape, TrueEllipseDiffersFromTheCosineRuleByAboutHalfAMicrometre) {
-    // reference/piston.md: D 80, E 0.5, at 45° ≈ 0.59 µm.
+    // docs/processes/piston.md: D 80, E 0.5, at 45° ≈ 0.59 µm.
     const PistonProfile cosine = constant_profile(80, 0.5, SectionShape::ellipse2());
     const PistonProfile ellipse = constant_profile(80, 0.5, SectionShape::ellipse());
     // The ellipse lies inside the cosine rule there.

@@ -9,7 +9,7 @@
 namespace nckit::drive {
 namespace {
 
-// reference/crosshatch.md: 8253 at 1 MHz, 1.5 deg/beat (240 beats/turn), 1:3 gearing.
+// docs/processes/crosshatch.md: 8253 at 1 MHz, 1.5 deg/beat (240 beats/turn), 1:3 gearing.
 constexpr double timer_clock_hz = 1'000'000.0;
 constexpr double beats_per_turn = 240.0;
 constexpr double gear = 3.0;

@@ -18,7 +18,7 @@ Bytes first_bytes(PhaseTableKind kind, int count, PortEncoding encoding = {}) {
 }
 
 TEST(PhaseTable, SeedSixBeatPortCodes) {
-    // reference/steppers.md: A, AB, B, BC, C, CA -> 0BH, 09H, 0DH, 0CH, 0EH, 0AH.
+    // docs/drives.md: A, AB, B, BC, C, CA -> 0BH, 09H, 0DH, 0CH, 0EH, 0AH.
     EXPECT_EQ(first_bytes(PhaseTableKind::three_phase_six_beat, 7, seed_port_encoding),
               (Bytes{0x0B, 0x09, 0x0D, 0x0C, 0x0E, 0x0A, 0x0B}));
     // The winding patterns 100, 110, 010, 011, 001, 101 behind them.

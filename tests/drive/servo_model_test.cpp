@@ -53,7 +53,7 @@ double analytic_step_velocity(const ServoParameters& p, double t) {
     return p.gain * r1 * r2 * (std::exp(r2 * t) - std::exp(r1 * t)) / (r2 - r1);
 }
 
-// The piston axis of reference/piston.md: 135 Hz, 15 kHz updates.
+// The piston axis of docs/processes/piston.md: 135 Hz, 15 kHz updates.
 constexpr double axis_hz = 135.0;
 constexpr double period_s = 1.0 / 15000.0;
 
@@ -221,7 +221,7 @@ TEST(ServoModel, SineSteadyStateMatchesTheFrequencyResponse) {
     // Against G alone the hold costs w h / 2 of phase: about 1 deg at 83 Hz and 15 kHz.
     const ServoParameters p = ServoParameters::from_natural_frequency(1.0, axis_hz, 0.7);
     const double lag_deg = std::arg(frequency_response(p, 2 * pi * 83.3)) * 180 / pi;
-    EXPECT_LT(lag_deg, -40.0);  // tens of degrees uncompensated (reference/piston.md)
+    EXPECT_LT(lag_deg, -40.0);  // tens of degrees uncompensated (docs/processes/piston.md)
     EXPECT_GT(lag_deg, -60.0);
 }
 

@@ -23,7 +23,7 @@ def steps(nckit, *args):
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 STEPPER_MILL = ROOT / "examples" / "machines" / "stepper_mill.toml"
-# The seed's port codes for the six beats A AB B BC C CA (reference/steppers.md).
+# The seed's port codes for the six beats A AB B BC C CA (docs/drives.md).
 SEED_CODES = [0x0B, 0x09, 0x0D, 0x0C, 0x0E, 0x0A]
 # 2-phase half step, winding A the highest of four bits: A AB B BC C CD D DA.
 TWO_PHASE_HALF = [0b1000, 0b1100, 0b0100, 0b0110, 0b0010, 0b0011, 0b0001, 0b1001]

@@ -94,7 +94,7 @@ TEST(EccentricExample, FinishingPassFollowsTheLawOfCosines) {
 }
 
 TEST(EccentricExample, WorkedNumbersOfTheReference) {
-    // X(0) = 46, X(90) = 39.547440, X(180) = 34 on the diameter (reference/eccentric.md).
+    // X(0) = 46, X(90) = 39.547440, X(180) = 34 on the diameter (docs/processes/eccentric.md).
     ProgramRun r = run(example / "eccentric_shaft.nc");
     ASSERT_FALSE(r.error);
     const auto all = passes(r.moves);

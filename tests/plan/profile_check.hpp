@@ -1,5 +1,5 @@
 #pragma once
-// Test-side formulas, written again from reference/scurve.md rather than taken from the
+// Test-side formulas, written again from docs/planner.md rather than taken from the
 // library, and the invariant checks every planned profile must pass.
 #include <algorithm>
 #include <cmath>

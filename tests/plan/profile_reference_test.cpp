@@ -1,4 +1,4 @@
-// Fixed reference cases: the worked numbers of reference/scurve.md, trapezoid closed forms,
+// Fixed reference cases: the worked numbers of docs/planner.md, trapezoid closed forms,
 // and the notch run-up.
 #include <gtest/gtest.h>
 
@@ -12,7 +12,7 @@ namespace {
 
 using plan_test::check_profile;
 
-//! The rest-to-rest duration of reference/scurve.md, its four cases as written there.
+//! The rest-to-rest duration of docs/planner.md, its four cases as written there.
 double reference_rest_to_rest_s(double d, double v, double a, double j) {
     if (v * j >= a * a && d >= v * (v / a + a / j)) return d / v + v / a + a / j;
     if (v * j >= a * a) {

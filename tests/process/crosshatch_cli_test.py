@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """`nckit crosshatch` on the three examples: the JSON contract and the worked numbers of
-reference/crosshatch.md; the G-code runs through `nckit moves` and `nckit steps` on the
+docs/processes/crosshatch.md; the G-code runs through `nckit moves` and `nckit steps` on the
 crosshatch machine and needs exactly the steps of the crosshatch's own step streams; the SVG
 draws the tracks; a bad job exits 2 with FILE:LINE:COL and writes nothing."""
 import json

@@ -42,7 +42,7 @@ Diagnostics errors_of(const std::string& text) {
     return plan ? Diagnostics{} : plan.diagnostics();
 }
 
-// reference/crosshatch.md, "Worked numbers": D 92, H 150, L 5, V2 60 rpm, N 15, 1.5°, gear 3, 1 MHz.
+// docs/processes/crosshatch.md, worked: D 92, H 150, L 5, V2 60, N 15, 1.5°, gear 3, 1 MHz.
 struct Worked {
     int heads;
     double index_deg;
@@ -144,7 +144,7 @@ TEST(Crosshatch, RandomPatternsWithWholeStepCountsClose) {
     }
 }
 
-// reference/crosshatch.md: divisors 44444 and 2778 (L 5, H 120) leave the head 0.0486° off per stroke.
+// docs/processes/crosshatch.md: divisors 44444 and 2778 (L 5, H 120): 0.0486° off per stroke.
 TEST(Crosshatch, FreeRunningTimersDriftAndTheAngleStaysWithinTheQuantisation) {
     std::string text = job_text(12, 18, 30, "timing = \"free_running_timers\"");
     text.replace(text.find("150.0"), 5, "120.0");

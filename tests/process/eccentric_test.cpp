@@ -39,7 +39,7 @@ MachineConfig lathe(bool servo) {
     return m;
 }
 
-// reference/eccentric.md, worked: e = 3, r = 20.
+// docs/processes/eccentric.md, worked: e = 3, r = 20.
 TEST(EccentricCam, WorkedDiameters) {
     const EccentricJob job = job_of(3, 20);
     EXPECT_NEAR(2 * eccentric_cam(job, 0).radius_mm, 46.0, 1e-12);
@@ -79,7 +79,7 @@ TEST(EccentricCam, DerivativesMatchFiniteDifferences) {
 }
 
 TEST(Eccentric, PeakAccelerationAndTheSpeedItAllows) {
-    // reference/eccentric.md: the slide's peak acceleration is e(1 + e/r)ω² at θ = 0.
+    // docs/processes/eccentric.md: the slide's peak acceleration is e(1 + e/r)ω² at θ = 0.
     const Result<EccentricReport> report = simulate_eccentric(job_of(3, 20, 60), lathe(false));
     ASSERT_TRUE(report.ok());
     const double omega = 2 * pi;

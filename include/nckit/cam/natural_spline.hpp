@@ -7,7 +7,7 @@ namespace nckit::cam {
 
 //! The cubic spline through (x_i, y_i) with free (natural) ends, y'' = 0 at the first and last
 //! point, continued beyond them by straight lines of the end slopes: the drawing rule for
-//! tables of points (reference/piston.md). Because y'' is already 0 at the ends, the straight
+//! tables of points (docs/processes/piston.md). Because y'' is already 0 at the ends, the straight
 //! continuation joins with matching value, slope and curvature.
 class NaturalSpline {
 public:

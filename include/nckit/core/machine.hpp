@@ -23,7 +23,7 @@ enum class DecimalPointInput {
 
 enum class ProfileKind { scurve, trapezoid };
 
-//! The winding sequence a stepper drive writes to its port (reference/steppers.md); `none` for
+//! The winding sequence a stepper drive writes to its port (docs/drives.md); `none` for
 //! a step/direction driver, which sequences the windings itself.
 enum class PhaseTableKind {
     none,

@@ -23,7 +23,7 @@ struct PortEncoding {
 };
 
 //! The milling retrofit's port: active-low windings with bit 3 held high, giving the codes
-//! 0BH, 09H, 0DH, 0CH, 0EH, 0AH for the six beats A, AB, B, BC, C, CA (reference/steppers.md).
+//! 0BH, 09H, 0DH, 0CH, 0EH, 0AH for the six beats A, AB, B, BC, C, CA (docs/drives.md).
 inline constexpr PortEncoding seed_port_encoding{true, 0x08};
 
 //! The encoding an axis's config asks for (`port_active_low`, `port_set_bits`).

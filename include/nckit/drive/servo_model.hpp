@@ -4,7 +4,7 @@
 
 namespace nckit::drive {
 
-//! y(s)/u(s) = gain / (T^2 s^2 + 2 zeta T s + 1): the seed's axis model (reference/piston.md).
+//! y(s)/u(s) = gain / (T^2 s^2 + 2 zeta T s + 1): the seed's axis model (docs/processes/piston.md).
 struct ServoParameters {
     double gain = 1.0;             //!< k, position out per setpoint in (DC gain), dimensionless
     double time_constant_s = 0.0;  //!< T = 1 / omega_n, s

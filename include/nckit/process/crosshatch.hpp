@@ -1,5 +1,5 @@
 #pragma once
-// Crosshatch laser hardening of cylinder bores (seed process, reference/crosshatch.md). A laser
+// Crosshatch laser hardening of cylinder bores (docs/processes/crosshatch.md). A laser
 // head inside the bore moves axially (feed stepper, lead screw) while it rotates (rotation
 // stepper): a down stroke and an up stroke with the rotation running draw two helices of opposite
 // slope; `heads` cycles, each started `index_deg` further round, make the diamond net.

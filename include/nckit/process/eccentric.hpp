@@ -1,5 +1,5 @@
 #pragma once
-// Eccentric shaft turning by electronic cam (reference/eccentric.md): instead of a macro of
+// Eccentric shaft turning by electronic cam (docs/processes/eccentric.md): instead of a macro of
 // short G1 blocks, the X axis is slaved to the spindle angle θ and follows
 //   a(θ) = e·cos θ + sqrt((r + Rn)² − e²·sin² θ) − Rn      (radius; X = 2a in diameter terms)
 // at every encoder count, so the eccentric cylinder of radius r about C = (e, 0) comes out

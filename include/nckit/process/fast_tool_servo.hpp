@@ -1,5 +1,5 @@
 #pragma once
-// Oval piston turning with a fast tool servo (reference/piston.md), simulated: the voice-coil
+// Oval piston turning with a fast tool servo (docs/processes/piston.md), simulated: the voice-coil
 // axis is the drive layer's exact second-order model, commanded through a DAC once per spindle
 // encoder count while the spindle's speed ripples. Three runs on the same conditions show what
 // each compensation buys: none (the wanted displacement written straight to the DAC), model-
