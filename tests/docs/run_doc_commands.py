@@ -2,7 +2,8 @@
 """Runs every shell command written in README.md, CONTRIBUTING.md and docs/**/*.md.
 
 A command is a line of a fenced block whose info string is `sh`, `bash` or `shell` (lines
-joined at a trailing backslash, comment lines left out), or a `$ ` line of a `console` block.
+joined at a trailing backslash or until a loop or quote is complete, comment lines left out), or
+a `$ ` line of a `console` block.
 An HTML comment on the line just before the fence changes how the block is run:
 
     <!-- doc-test: skip REASON -->   not run (LinuxCNC, root, a browser, minutes of work);
@@ -41,20 +42,31 @@ class Block:
     expected_exit: int = 0
 
 
+def complete(command: str) -> bool:
+    """Whether bash reads `command` as whole (a `for ... do` without its `done` is not)."""
+    return subprocess.run(["bash", "-n", "-c", command], stdin=subprocess.DEVNULL,
+                          capture_output=True).returncode == 0
+
+
 def join_continuations(lines):
-    """(line number, text) pairs with backslash-continued lines joined into one command."""
+    """(line number, text) pairs joined into whole commands: at a trailing backslash, and until
+    a multi-line construct (a loop, an if, a quote) is complete; comment lines are left out."""
     out, pending, start = [], "", 0
     for number, text in lines:
         if not pending:
+            if not text.strip() or text.lstrip().startswith("#"):
+                continue
             start = number
         stripped = text.rstrip()
         if stripped.endswith("\\"):
             pending += stripped[:-1] + " "
             continue
         pending += text
-        if pending.strip() and not pending.lstrip().startswith("#"):
+        if complete(pending):
             out.append((start, pending.strip()))
-        pending = ""
+            pending = ""
+        else:
+            pending += "\n"
     if pending.strip():
         out.append((start, pending.strip()))
     return out
