@@ -43,9 +43,11 @@ class Block:
 
 
 def complete(command: str) -> bool:
-    """Whether bash reads `command` as whole (a `for ... do` without its `done` is not)."""
-    return subprocess.run(["bash", "-n", "-c", command], stdin=subprocess.DEVNULL,
-                          capture_output=True).returncode == 0
+    """Whether bash reads `command` as whole (a `for ... do` without its `done` is not, nor a
+    here-document without its end marker, which bash only warns about)."""
+    checked = subprocess.run(["bash", "-n", "-c", command], stdin=subprocess.DEVNULL,
+                             capture_output=True)
+    return checked.returncode == 0 and b"here-document" not in checked.stderr
 
 
 def join_continuations(lines):
