@@ -30,6 +30,9 @@ from pathlib import Path
 
 SHELL_FENCES = {"sh", "bash", "shell"}
 MARKER = re.compile(r"^\s*<!--\s*doc-test:\s*(skip|exit)\b\s*(.*?)\s*-->\s*$")
+# What can leave a command open at the end of a line: a compound command, a here-document, a
+# quote, a group, a pipe or && / || waiting for their right side.
+MAY_OPEN = re.compile(r"\b(for|while|until|if|case|select|function)\b|<<|[{(\"'`]|(\||&&)\s*$")
 FENCE = re.compile(r"^(\s*)(```+|~~~+)\s*([A-Za-z0-9_+-]*)")
 
 
@@ -45,6 +48,8 @@ class Block:
 def complete(command: str) -> bool:
     """Whether bash reads `command` as whole (a `for ... do` without its `done` is not, nor a
     here-document without its end marker, which bash only warns about)."""
+    if not MAY_OPEN.search(command):
+        return True  # nothing that can span lines: spare the bash start-up
     checked = subprocess.run(["bash", "-n", "-c", command], stdin=subprocess.DEVNULL,
                              capture_output=True)
     return checked.returncode == 0 and b"here-document" not in checked.stderr
