@@ -12,7 +12,9 @@ to nothing in the tree (the standard library, LinuxCNC's `hal.h`) are not nckit'
 A cell is empty (forbidden), ✓ (anything of that stage), or a list ending in "only"
 (`move.hpp` only; pattern, `svg_plot.hpp` only): each item names a header or a subfolder of the
 stage, relative to src/<stage>/ or include/nckit/<stage>/. A file may always include files of
-its own row. Every refused edge is printed as FILE:LINE: error: ... and the exit status is 1;
+its own row. The stage libraries' link lines (src/CMakeLists.txt's `nckit_stage(... DEPENDS ...)`,
+`target_link_libraries` of the nckit command and the LinuxCNC plug-in) are checked against the
+same rows. Every refused edge is printed as FILE:LINE: error: ... and the exit status is 1;
 a page without the table, or a file in a folder the table has no row for, exits 2.
 
 Usage: check_layering.py [SOURCE_DIR]   (default: the repository this script is in)"""
@@ -142,7 +144,7 @@ def source_files(root: Path):
 def check(root: Path, page: Path):
     """The refused edges as printable lines, and how many includes were checked."""
     table, columns = read_table(page)
-    errors, checked = [], 0
+    errors, checked = check_links(root, table, columns), 0
     for path in source_files(root):
         relative = path.relative_to(root)
         row = row_of(relative)
@@ -168,6 +170,55 @@ def check(root: Path, page: Path):
     return errors, checked
 
 
+# The libraries the stages build and the rows they stand for; `nckit_pattern` is the `pattern`
+# subfolder of process. Other targets of the build (tests, the HAL modules' nckit_realtime) are
+# not stages.
+LIBRARY_ROWS = {"nckit": "cli", "nckit_linuxcnc": "linuxcnc_interp", "nckit_pattern": "process/pattern"}
+LINK_FILES = ("src/CMakeLists.txt", "src/linuxcnc_interp/CMakeLists.txt")
+LINK_CALL = re.compile(r"\b(nckit_stage|target_link_libraries)\s*\(([^()]*)\)", re.S)
+
+
+def library_column(library: str):
+    """(column stage, the subfolder a link stands for or None) of one of nckit's libraries."""
+    if library == "nckit_pattern":
+        return "process", "pattern"
+    return library[len("nckit_"):], None
+
+
+def check_links(root: Path, table, columns):
+    """Each stage library links only libraries of stages its row may include. A cell that allows
+    only some headers allows no link (they are header-only), except a subfolder that is a library
+    of its own (`pattern`)."""
+    errors = []
+    for name in LINK_FILES:
+        path = root / name
+        if not path.is_file():
+            continue
+        text = path.read_text(encoding="utf-8")
+        for call in LINK_CALL.finditer(text):
+            words = call.group(2).split()
+            if not words:
+                continue
+            target = words[0] if call.group(1) == "target_link_libraries" else f"nckit_{words[0]}"
+            row = LIBRARY_ROWS.get(target, target[len("nckit_"):])
+            if not target.startswith("nckit") or row not in table:
+                continue
+            if call.group(1) == "nckit_stage":
+                words = words[words.index("DEPENDS") + 1:] if "DEPENDS" in words else []
+            offset = call.start(2)
+            for library in words[1:] if call.group(1) == "target_link_libraries" else words:
+                if not re.fullmatch(r"nckit_[a-z_]+", library) or library == target:
+                    continue
+                column, folder = library_column(library)
+                cell = table[row].get(column) if column in columns else None
+                if cell == [] or (folder is not None and cell is not None and folder in cell):
+                    continue
+                line = text.count("\n", 0, text.index(library, offset)) + 1
+                errors.append(f"{name}:{line}: error: {target} ({row}) may not link {library} "
+                              f"(stage {column}); the table lets {row} include: {describe(table[row])}")
+    return errors
+
+
 def main() -> int:
     root = Path(sys.argv[1]) if len(sys.argv) > 1 else Path(__file__).resolve().parents[2]
     page = root / "docs" / "architecture.md"
@@ -184,7 +235,8 @@ def main() -> int:
     if checked == 0:
         print("check_layering: no nckit include found: wrong source folder?", file=sys.stderr)
         return 2
-    print(f"layering: {checked} includes follow the table of {page.relative_to(root)}")
+    print(f"layering: {checked} includes and the stage libraries' links follow the table of "
+          f"{page.relative_to(root)}")
     return 0
 
 

@@ -26,6 +26,19 @@ BASE = {
     "hal/nckit_servo.cpp": '#include "nckit/drive/step_generator.hpp"\n#include "hal.h"\n',
 }
 
+# The link lines of a build that follows the table.
+LINKS = """nckit_stage(core SOURCES core/a.cpp DEPENDS fmt::fmt)
+nckit_stage(gcode SOURCES gcode/a.cpp DEPENDS nckit_core)
+nckit_stage(interp SOURCES interp/a.cpp DEPENDS nckit_gcode nckit_core)
+nckit_stage(plan SOURCES plan/a.cpp
+  DEPENDS nckit_core)
+nckit_stage(drive SOURCES drive/a.cpp DEPENDS nckit_plan nckit_core)
+nckit_stage(pattern SOURCES process/pattern/a.cpp DEPENDS nckit_plan nckit_interp ${DXFLIB_LIBRARY})
+nckit_stage(report SOURCES report/a.cpp DEPENDS nckit_pattern nckit_plan nckit_core)
+add_executable(nckit cli/main.cpp)
+target_link_libraries(nckit PRIVATE nckit_report nckit_drive CLI11::CLI11)
+"""
+
 
 def run(extra, page=PAGE):
     with tempfile.TemporaryDirectory() as tmp:
@@ -40,7 +53,7 @@ def run(extra, page=PAGE):
 
 CASES = [
     # (what, extra files, exit status, text the output must hold[, text it must not hold])
-    ("the allowed edges pass", {}, 0, "includes follow the table"),
+    ("the allowed edges pass", {}, 0, "8 includes and the stage libraries' links follow the table"),
     ("plan may include interp's move.hpp",
      {"src/plan/planner.cpp": '#include "nckit/interp/move.hpp"\n#include "rates.hpp"\n'}, 0, "follow"),
     ("plan may not include the rest of interp",
@@ -64,6 +77,16 @@ CASES = [
     ("nothing may include the command line's files",
      {"src/report/report_page.cpp": '#include "../cli/common.hpp"\n'}, 1,
      "src/report/report_page.cpp:1: error: report may not include src/cli/common.hpp (stage cli)"),
+    ("the stage libraries link what their rows allow",
+     {"src/CMakeLists.txt": LINKS}, 0, "follow"),
+    ("plan's library may not link interp: move.hpp is header-only",
+     {"src/CMakeLists.txt": LINKS.replace("DEPENDS nckit_core)\nnckit_stage(drive", "DEPENDS nckit_interp nckit_core)\nnckit_stage(drive")},
+     1, "src/CMakeLists.txt:5: error: nckit_plan (plan) may not link nckit_interp"),
+    ("the plug-in may not link drive",
+     {"src/CMakeLists.txt": LINKS,
+      "src/linuxcnc_interp/CMakeLists.txt": "add_library(nckit_linuxcnc MODULE a.cpp)\n"
+                                            "target_link_libraries(nckit_linuxcnc PRIVATE\n  nckit_interp nckit_drive fmt::fmt)\n"},
+     1, "src/linuxcnc_interp/CMakeLists.txt:3: error: nckit_linuxcnc (linuxcnc_interp) may not link nckit_drive"),
     ("a stage the table has no row for",
      {"src/robot/arm.cpp": '#include "nckit/core/diagnostic.hpp"\n'}, 2, "has no row 'robot'"),
     ("a page without the table", {}, 2, "no table headed"),
