@@ -1,6 +1,8 @@
 #!/usr/bin/env python3
 """check_layering.py refuses what it must: tiny trees, each with docs/architecture.md's real
 table, and one include that is allowed or not. Usage: check_layering_test.py [SOURCE_DIR]"""
+import contextlib
+import io
 import subprocess
 import sys
 import tempfile
@@ -8,6 +10,9 @@ from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
 CHECKER = HERE / "check_layering.py"
+sys.dont_write_bytecode = True  # nothing written into the source tree
+sys.path.insert(0, str(HERE))
+import check_layering  # noqa: E402  (the checker beside this file)
 SOURCE = Path(sys.argv[1]) if len(sys.argv) > 1 else HERE.parents[1]
 PAGE = (SOURCE / "docs" / "architecture.md").read_text(encoding="utf-8")
 
@@ -47,8 +52,17 @@ def run(extra, page=PAGE):
             path = root / name
             path.parent.mkdir(parents=True, exist_ok=True)
             path.write_text(text, encoding="utf-8")
-        done = subprocess.run([sys.executable, str(CHECKER), str(root)], capture_output=True, text=True)
-        return done.returncode, done.stdout + done.stderr
+        # In this process (a Python start per case is slow on a loaded machine), through the
+        # checker's own main(), so its exit status and messages are what is tested.
+        output = io.StringIO()
+        saved_argv = sys.argv
+        sys.argv = [str(CHECKER), str(root)]
+        try:
+            with contextlib.redirect_stdout(output), contextlib.redirect_stderr(output):
+                status = check_layering.main()
+        finally:
+            sys.argv = saved_argv
+        return status, output.getvalue()
 
 
 CASES = [
@@ -106,6 +120,19 @@ def page_for(what):
 
 def main() -> int:
     failures = 0
+    # Once as a program, as CTest runs it: a forbidden edge exits 1 and names file and line.
+    with tempfile.TemporaryDirectory() as tmp:
+        root = Path(tmp)
+        for name, text in {**BASE, "docs/architecture.md": PAGE,
+                           "src/gcode/parser.cpp": '#include "nckit/interp/move.hpp"\n'}.items():
+            (root / name).parent.mkdir(parents=True, exist_ok=True)
+            (root / name).write_text(text, encoding="utf-8")
+        done = subprocess.run([sys.executable, str(CHECKER), str(root)], capture_output=True, text=True)
+        if done.returncode != 1 or "src/gcode/parser.cpp:1: error: gcode may not include" not in done.stderr:
+            failures += 1
+            print(f"FAIL the checker as a program: exit {done.returncode}\n{done.stdout}{done.stderr}")
+        else:
+            print("ok   the checker as a program")
     for what, extra, status, text, *absent in CASES:
         got_status, output = run(extra, page_for(what))
         if got_status != status or text not in output or any(a in output for a in absent):
