@@ -216,7 +216,7 @@ std::optional<PistonJob> read_document(const toml::table& document, ConfigSink& 
                   .profile = PistonProfile(DrawingFunction::constant(0),
                                            DrawingFunction::constant(0), SectionShape::ellipse2()),
                   .feed_mm_rev = 0.1, .encoder_counts = 360, .spindle_ripple = 0,
-                  .servo = servo.value_or(FastServoSpec{}), .demand = {}};
+                  .servo = servo.value_or(FastServoSpec{}), .demand = {}, .source = {}};
     if (auto feed = bounded(reader, "feed_mm_rev", Need::optional, Sign::positive, 10, sink)) {
         job.feed_mm_rev = *feed;
     }

@@ -220,8 +220,14 @@ OrderResult optimise_tour(const std::vector<CutEnds>& cuts, const OrderCosts& co
                 std::vector<char> run_flip(t.flipped.begin() + i, t.flipped.begin() + j + 1);
                 if (best_rev) {
                     std::reverse(run_order.begin(), run_order.end());
-                    std::reverse(run_flip.begin(), run_flip.end());
-                    for (char& f : run_flip) f = static_cast<char>(f == 0 ? 1 : 0);
+                    // Reversed and flipped in one pass (an in-place flip after std::reverse
+                    // trips GCC 12's -Wstringop-overflow on an empty-looking vector).
+                    std::vector<char> reversed_flip;
+                    reversed_flip.reserve(run_flip.size());
+                    for (auto f = run_flip.rbegin(); f != run_flip.rend(); ++f) {
+                        reversed_flip.push_back(static_cast<char>(*f == 0 ? 1 : 0));
+                    }
+                    run_flip = std::move(reversed_flip);
                 }
                 t.order.erase(t.order.begin() + i, t.order.begin() + j + 1);
                 t.flipped.erase(t.flipped.begin() + i, t.flipped.begin() + j + 1);
