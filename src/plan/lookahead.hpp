@@ -82,6 +82,8 @@ struct WindowRun {
     ProfileLimits first_limits;  //!< its first segment's (times run_margin); limits never drift far below
     double junction_max = 0;  //!< mm/s at its end
     double bound = 0;         //!< mm/s, from the backward pass: the end speed it can still stop from
+    //! The bound no longer depends on the window's provisional stop at its end (see plan()).
+    bool bound_final = false;
     //! mm/s, max_end_speed(length, 0, limits) once computed, < 0 until then; reset whenever
     //! length or limits change.
     mutable double stop_speed = -1;
@@ -117,6 +119,7 @@ private:
     //! its own by lowering its limits to the segment's (`lowered`) without lowering any bound.
     [[nodiscard]] bool lowers_last_run(const WindowSegment& segment, ProfileLimits& lowered) const;
     void emit_event(const WindowEvent& event, const AxisVector& position);
+    [[nodiscard]] std::size_t max_run_segments() const;
     //! max_end_speed(run.length, 0, run.limits), cached in the run.
     [[nodiscard]] double stop_speed(const WindowRun& run) const;
     //! Run k (from the front) or a later one changed (length, limits or junction_max) since

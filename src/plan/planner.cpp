@@ -30,7 +30,10 @@ struct Planner::Impl {
     struct Pending {
         PathSegment path;
         double full_length = 0;  //!< programmed length, for the half-line rule
-        ProfileLimits limits;
+        //! Computed when first needed: a short line of a CAM chain is usually eaten whole by the
+        //! transitions at its ends, and then its own limits never matter.
+        std::optional<ProfileLimits> limits;
+        double normal_share = 0.5;  //!< of the acceleration, for the curvature term
         double feed_mm_s = 0;    //!< +inf for rapids
         bool blendable = false;  //!< a G1 line or a G2/G3 arc: its ends may be rounded
         PathControl control;
@@ -88,7 +91,7 @@ struct Planner::Impl {
             p.entry.reset();
         }
         if (p.path.length > min_trimmed_length) {
-            add_segment(std::move(p.path), p.limits, junction_max, p.where, p.sequence_number, false,
+            add_segment(std::move(p.path), limits_of(p), junction_max, p.where, p.sequence_number, false,
                         std::move(pending_events));
         } else {
             for (WindowEvent& e : pending_events) lookahead.add_event(std::move(e), position);
@@ -108,7 +111,7 @@ struct Planner::Impl {
             } else if (jerk_limited ? plan_detail::smooth_join(p.path, next.path,
                                                                plan_detail::smooth_direction_tolerance, true)
                                     : plan_detail::tangent(p.path, next.path)) {
-                release_pending(p.limits.max_velocity);
+                release_pending(limits_of(p).max_velocity);
             } else if (p.blendable && next.blendable) {
                 const double tolerance = p.control.tolerance_mm > 0 ? p.control.tolerance_mm
                                                                     : options.default_blend_tolerance_mm;
@@ -150,19 +153,21 @@ struct Planner::Impl {
                 own[i] = t->start.d1[i];
             }
             auto xyz = [](const AxisVector& v) { return std::array<double, 3>{v[0], v[1], v[2]}; };
-            plan_detail::Transition entry = *p.entry;
-            plan_detail::Transition exit = *t;
-            if (plan_detail::set_end_states(entry, xyz(entry.start.d1), xyz(entry.start.d2), own, k, tolerance) &&
-                plan_detail::set_end_states(exit, own, k, xyz(exit.end.d1), xyz(exit.end.d2), tolerance)) {
-                *p.entry = std::move(entry);
-                *t = std::move(exit);
+            const auto entry = plan_detail::with_end_states(*p.entry, xyz(p.entry->start.d1), xyz(p.entry->start.d2),
+                                                            own, k, tolerance);
+            if (entry) {
+                const auto exit = plan_detail::with_end_states(*t, own, k, xyz(t->end.d1), xyz(t->end.d2), tolerance);
+                if (exit) {
+                    plan_detail::apply(*p.entry, *entry);
+                    plan_detail::apply(*t, *exit);
+                }
             }
         }
         p.path.length -= t->trim_before;
         const SourceLocation where = p.where;
         const std::int64_t number = p.sequence_number;
         const double feed = std::min(p.feed_mm_s, next.feed_mm_s);
-        release_pending(p.limits.max_velocity);
+        release_pending(p.path.length > min_trimmed_length ? limits_of(p).max_velocity : 0.0);
         next.path = trim_start(next.path, t->trim_after);
         next.entry = std::move(*t);
         next.entry_feed_mm_s = feed;
@@ -178,15 +183,21 @@ struct Planner::Impl {
             segment_limits(curve, machine, std::min(p.feed_mm_s, next.feed_mm_s), kind, normal_share);
         const SourceLocation where = p.where;
         const std::int64_t number = p.sequence_number;
-        release_pending(p.limits.max_velocity);
+        release_pending(limits_of(p).max_velocity);
         add_segment(curve, limits, limits.max_velocity, where, number, true, {});
         next.path = trim_start(next.path, trim_after);
     }
 
+    [[nodiscard]] ProfileLimits limits_of(Pending& p) const {
+        if (!p.limits) p.limits = segment_limits(p.path, machine, p.feed_mm_s, kind, p.normal_share);
+        return *p.limits;
+    }
+
     bool check_axes(const PathSegment& path, const SourceLocation& where) {
-        const DerivativeBounds b = derivative_bounds(path);
+        // A line moves exactly the axes its rate moves; other shapes by their bounds.
+        const AxisVector moving = path.shape == SegmentShape::line ? path.rate : derivative_bounds(path).d1;
         for (std::size_t i = 0; i < axis_count; ++i) {
-            if (b.d1[i] > 0 && machine.find(static_cast<Axis>(i)) == nullptr) {
+            if (moving[i] != 0 && machine.find(static_cast<Axis>(i)) == nullptr) {
                 diagnostics.push_back(error_at(where, "unknown-axis",
                                                std::string("move of axis ") + axis_letters[i] +
                                                    ", which the machine does not have"));
@@ -212,7 +223,7 @@ struct Planner::Impl {
         const double share = kind == ProfileKind::trapezoid && path.shape == SegmentShape::arc
                                  ? trapezoid_blend_normal_share
                                  : 0.5;
-        next.limits = segment_limits(path, machine, feed_mm_s, kind, share);
+        next.normal_share = share;
         next.full_length = path.length;
         next.path = std::move(path);
         next.feed_mm_s = feed_mm_s;

@@ -39,9 +39,19 @@ struct Transition {
 //! curvature of the turn between them (instead of the line's own direction and 0), the chain
 //! follows the curve the polyline samples, and its speed is set by that curve's radius rather
 //! than by a curvature pulse at every vertex and the rounding noise of the written decimals.
-[[nodiscard]] bool set_end_states(Transition& transition, const std::array<double, 3>& start_d1,
-                                  const std::array<double, 3>& start_d2, const std::array<double, 3>& end_d1,
-                                  const std::array<double, 3>& end_d2, double tolerance_mm);
+struct Rebuilt {
+    PathSegment curve;
+    PathPoint start;
+    PathPoint end;
+    double deviation_mm = 0;
+};
+[[nodiscard]] std::optional<Rebuilt> with_end_states(const Transition& transition,
+                                                     const std::array<double, 3>& start_d1,
+                                                     const std::array<double, 3>& start_d2,
+                                                     const std::array<double, 3>& end_d1,
+                                                     const std::array<double, 3>& end_d2, double tolerance_mm);
+//! The transition takes the rebuilt curve and end states.
+void apply(Transition& transition, const Rebuilt& rebuilt);
 
 //! The transition that trims at most before_room from before's end and after_room from
 //! after's start (a leftover of before shorter than min_leftover_mm is taken whole), as long
