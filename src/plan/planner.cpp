@@ -100,7 +100,7 @@ struct Planner::Impl {
         pending.reset();
     }
 
-    void connect(Pending next) {
+    void connect(Pending&& next) {
         if (pending) {
             Pending& p = *pending;
             // Trapezoids may step the acceleration, so only the direction must be continuous;
@@ -138,38 +138,41 @@ struct Planner::Impl {
     //! Any other corner, and every join with a jump in curvature under a jerk limit: a quintic
     //! transition within the tolerance. Each side gives at most half its programmed length.
     bool transition(Pending& p, Pending& next, double tolerance) {
-        auto t = plan_detail::make_transition(p.path, 0.5 * p.full_length, next.path, 0.5 * next.path.length,
-                                              tolerance);
-        if (!t) return false;
-        if (p.entry && !(p.path.length - t->trim_before > 0)) {
+        // Built in place: a transition is a large value, and this runs once per move of a chain.
+        auto& t = next.entry.emplace();
+        if (!plan_detail::make_transition(p.path, 0.5 * p.full_length, next.path, 0.5 * next.path.length, tolerance,
+                                          t)) {
+            next.entry.reset();
+            return false;
+        }
+        if (p.entry && !(p.path.length - t.trim_before > 0)) {
             // p is eaten by its two transitions: they meet at its middle, in its direction, with
             // the curvature of the turn between their outer ends (transition.hpp); failing the
             // tolerance, as built (no curvature there).
             std::array<double, 3> k{};
             std::array<double, 3> own{};
-            const double span = p.entry->curve.length + t->curve.length;
+            const double span = p.entry->curve.length + t.curve.length;
             for (std::size_t i = 0; i < 3; ++i) {
-                k[i] = (t->end.d1[i] - p.entry->start.d1[i]) / span;
-                own[i] = t->start.d1[i];
+                k[i] = (t.end.d1[i] - p.entry->start.d1[i]) / span;
+                own[i] = t.start.d1[i];
             }
             auto xyz = [](const AxisVector& v) { return std::array<double, 3>{v[0], v[1], v[2]}; };
             const auto entry = plan_detail::with_end_states(*p.entry, xyz(p.entry->start.d1), xyz(p.entry->start.d2),
                                                             own, k, tolerance);
             if (entry) {
-                const auto exit = plan_detail::with_end_states(*t, own, k, xyz(t->end.d1), xyz(t->end.d2), tolerance);
+                const auto exit = plan_detail::with_end_states(t, own, k, xyz(t.end.d1), xyz(t.end.d2), tolerance);
                 if (exit) {
                     plan_detail::apply(*p.entry, *entry);
-                    plan_detail::apply(*t, *exit);
+                    plan_detail::apply(t, *exit);
                 }
             }
         }
-        p.path.length -= t->trim_before;
+        p.path.length -= t.trim_before;
         const SourceLocation where = p.where;
         const std::int64_t number = p.sequence_number;
         const double feed = std::min(p.feed_mm_s, next.feed_mm_s);
         release_pending(p.path.length > min_trimmed_length ? limits_of(p).max_velocity : 0.0);
-        next.path = trim_start(next.path, t->trim_after);
-        next.entry = std::move(*t);
+        next.path = trim_start(next.path, t.trim_after);
         next.entry_feed_mm_s = feed;
         next.entry_where = where;
         next.entry_number = number;

@@ -86,11 +86,9 @@ namespace {
 //! all of them have a component of at least min_parametric_speed along one direction, so has
 //! the curve everywhere. Returns the deviation bound, or a negative value when it cannot decide
 //! (then the samples do).
-double hull_verdict(const PathSegment& curve, const Transition& t) {
+double hull_verdict(const PathSegment& curve, const Transition& t, const AxisVector& a, const AxisVector& b) {
     if (t.replaced_before.shape != SegmentShape::line || t.replaced_after.shape != SegmentShape::line) return -1;
-    const AxisVector a = position_at(t.replaced_before, 0.0);
-    const AxisVector c = position_at(t.replaced_after, 0.0);
-    const AxisVector b = position_at(t.replaced_after, t.replaced_after.length);
+    const AxisVector& c = t.replaced_after.origin;  // a line's start
     std::array<double, 3> ab{};
     std::array<double, 3> ac{};
     std::array<double, 3> bc{};
@@ -161,7 +159,7 @@ bool build(const Transition& t, const PathPoint& a, const PathPoint& b, double t
     const double chord = distance3(a.position, b.position);
     const double length = 0.5 * (chord + t.trim_before + t.trim_after);
     curve = make_quintic(a, b, length, AxisVector{});
-    const double bound = hull_verdict(curve, t);
+    const double bound = hull_verdict(curve, t, a.position, b.position);
     if (bound >= 0 && bound <= deviation_target * tolerance_mm) {
         deviation_mm = bound;
         return true;
@@ -195,15 +193,15 @@ bool build(const Transition& t, const PathPoint& a, const PathPoint& b, double t
 
 }  // namespace
 
-std::optional<Transition> make_transition(const PathSegment& before, double before_room, const PathSegment& after,
-                                          double after_room, double tolerance_mm) {
+bool make_transition(const PathSegment& before, double before_room, const PathSegment& after, double after_room,
+                     double tolerance_mm, Transition& out) {
     if (!(tolerance_mm > 0) || before.shape == SegmentShape::quintic || after.shape == SegmentShape::quintic) {
-        return std::nullopt;
+        return false;
     }
     // The quintic covers XYZ; any other axis would arrive at the wrong place (its length differs
     // from the trims), so they must stand.
     for (std::size_t i = 3; i < axis_count; ++i) {
-        if (before.rate[i] != 0 || after.rate[i] != 0) return std::nullopt;
+        if (before.rate[i] != 0 || after.rate[i] != 0) return false;
     }
     before_room = std::min(before_room, before.length);
     after_room = std::min(after_room, after.length);
@@ -214,8 +212,7 @@ std::optional<Transition> make_transition(const PathSegment& before, double befo
         double trim_a = std::min(t, before_room);
         if (before.length - trim_a < min_leftover_mm) trim_a = before.length;
         const double trim_b = std::min(t, after_room);
-        if (!(trim_a > min_trim_mm && trim_b > min_trim_mm)) return std::nullopt;
-        Transition out;
+        if (!(trim_a > min_trim_mm && trim_b > min_trim_mm)) return false;
         out.trim_before = trim_a;
         out.trim_after = trim_b;
         out.replaced_before = trim_start(before, before.length - trim_a);
@@ -223,12 +220,12 @@ std::optional<Transition> make_transition(const PathSegment& before, double befo
         out.replaced_after.length = trim_b;
         out.start = point_at(before, before.length - trim_a);
         out.end = point_at(after, trim_b);
-        if (build(out, out.start, out.end, tolerance_mm, out.curve, out.deviation_mm)) return out;
+        if (build(out, out.start, out.end, tolerance_mm, out.curve, out.deviation_mm)) return true;
         const double target = deviation_target * tolerance_mm;
         const double shrink = out.deviation_mm > target ? 0.9 * target / out.deviation_mm : 0.5;
         t = std::max(trim_a, trim_b) * std::clamp(shrink, 0.05, 0.8);
     }
-    return std::nullopt;
+    return false;
 }
 
 std::optional<Rebuilt> with_end_states(const Transition& transition, const std::array<double, 3>& start_d1,

@@ -57,9 +57,9 @@ void apply(Transition& transition, const Rebuilt& rebuilt);
 //! after's start (a leftover of before shorter than min_leftover_mm is taken whole), as long
 //! as its deviation stays within tolerance_mm; none when the axes beyond XYZ move, when the
 //! measured axes are not XYZ, or when no trim long enough fits the tolerance.
-[[nodiscard]] std::optional<Transition> make_transition(const PathSegment& before, double before_room,
-                                                        const PathSegment& after, double after_room,
-                                                        double tolerance_mm);
+//! The transition is written to `out` (which it leaves undefined when there is none).
+[[nodiscard]] bool make_transition(const PathSegment& before, double before_room, const PathSegment& after,
+                                   double after_room, double tolerance_mm, Transition& out);
 
 //! Pieces of path left between transitions shorter than this (mm) join the transition.
 inline constexpr double min_leftover_mm = 1e-3;
