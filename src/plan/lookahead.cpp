@@ -196,11 +196,12 @@ void Lookahead::plan(std::size_t keep_at_most) {
         bool final_speed = finished_;
         if (start_speed_ >= r.bound) {
             v_end = r.bound;
-            final_speed = final_speed || r.bound_final;
+            final_speed = final_speed || (final_bound_commits_ ? r.bound_final : r.bound >= r.junction_max);
         } else {
             const double reachable = max_end_speed(r.length, start_speed_, r.limits, kind_);
             v_end = std::min(r.bound, reachable);
-            final_speed = final_speed || r.bound_final || r.bound >= std::min(r.junction_max, reachable);
+            final_speed = final_speed || (final_bound_commits_ && r.bound_final) ||
+                          r.bound >= std::min(r.junction_max, reachable);
         }
         if (!final_speed && segments_.size() <= keep_at_most) break;
         commit_front(v_end);

@@ -110,6 +110,11 @@ public:
     //! Tests only: every backward pass recomputes every bound, and no stop speed is taken from
     //! the cache, as a reference for the incremental passes (whose results must be identical).
     void set_full_passes(bool full) { full_passes_ = full; }
+    //! Tests only: commit a run only when its own junction limit or its speed-up holds its end
+    //! speed (or the window overflows), not as soon as a junction limit further on does.
+    void set_final_bound_commits(bool on) { final_bound_commits_ = on; }
+    //! Segments in the window now (tests: how far planning lags behind the input).
+    [[nodiscard]] std::size_t window_segments() const { return segments_.size(); }
 
 private:
     void plan(std::size_t keep_at_most);
@@ -143,6 +148,7 @@ private:
     //! the last backward pass: a bound there changes only when the next run's bound does.
     std::size_t dirty_from_ = 0;
     bool full_passes_ = false;
+    bool final_bound_commits_ = true;
 };
 
 }  // namespace nckit::plan_detail
