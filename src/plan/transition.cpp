@@ -207,7 +207,12 @@ bool make_transition(const PathSegment& before, double before_room, const PathSe
     after_room = std::min(after_room, after.length);
     // A sliver of `before` left over would be a segment of its own: take it into the curve.
     if (before.length - before_room < min_leftover_mm) before_room = before.length;
-    double t = std::min(before_room, after_room);
+    // The first attempt takes all the room on both sides, even when it differs: on a chain of
+    // short lines of unequal lengths, equal trims would leave a piece of every longer line, a
+    // straight piece (curvature 0) between two transitions, where the jerk terms must pay for
+    // the curvature pulse. Taking the whole room lets the transitions meet at the lines' middles
+    // with a common curvature (set_end_states). Failing the tolerance, both shrink alike.
+    double t = std::max(before_room, after_room);
     for (int attempt = 0; attempt < max_attempts; ++attempt) {
         double trim_a = std::min(t, before_room);
         if (before.length - trim_a < min_leftover_mm) trim_a = before.length;
