@@ -139,32 +139,31 @@ struct Planner::Impl {
     //! transition within the tolerance. Each side gives at most half its programmed length.
     bool transition(Pending& p, Pending& next, double tolerance) {
         // Built in place: a transition is a large value, and this runs once per move of a chain.
+        auto xyz = [](const AxisVector& v) { return std::array<double, 3>{v[0], v[1], v[2]}; };
+        plan_detail::ChainStart chain;
+        if (p.entry) {
+            chain.entry_length = p.entry->curve.length;
+            chain.entry_start_d1 = xyz(p.entry->start.d1);
+        }
+        const double before_room = 0.5 * p.full_length;
+        const double after_room = 0.5 * next.path.length;
         auto& t = next.entry.emplace();
-        if (!plan_detail::make_transition(p.path, 0.5 * p.full_length, next.path, 0.5 * next.path.length, tolerance,
-                                          t)) {
+        if (!plan_detail::make_transition(p.path, before_room, next.path, after_room, tolerance, t,
+                                          p.entry ? &chain : nullptr)) {
             next.entry.reset();
             return false;
         }
-        if (p.entry && !(p.path.length - t.trim_before > 0)) {
+        if (t.chained) {
             // p is eaten by its two transitions: they meet at its middle, in its direction, with
-            // the curvature of the turn between their outer ends (transition.hpp); failing the
-            // tolerance, as built (no curvature there).
-            std::array<double, 3> k{};
-            std::array<double, 3> own{};
-            const double span = p.entry->curve.length + t.curve.length;
-            for (std::size_t i = 0; i < 3; ++i) {
-                k[i] = (t.end.d1[i] - p.entry->start.d1[i]) / span;
-                own[i] = t.start.d1[i];
-            }
-            auto xyz = [](const AxisVector& v) { return std::array<double, 3>{v[0], v[1], v[2]}; };
+            // the curvature of the turn between their outer ends (transition.hpp). The one into p
+            // is rebuilt to end there; failing the tolerance, both stay as built (no curvature).
             const auto entry = plan_detail::with_end_states(*p.entry, xyz(p.entry->start.d1), xyz(p.entry->start.d2),
-                                                            own, k, tolerance);
+                                                            xyz(t.start.d1), xyz(t.start.d2), tolerance);
             if (entry) {
-                const auto exit = plan_detail::with_end_states(t, own, k, xyz(t.end.d1), xyz(t.end.d2), tolerance);
-                if (exit) {
-                    plan_detail::apply(*p.entry, *entry);
-                    plan_detail::apply(t, *exit);
-                }
+                plan_detail::apply(*p.entry, *entry);
+            } else if (!plan_detail::make_transition(p.path, before_room, next.path, after_room, tolerance, t)) {
+                next.entry.reset();
+                return false;
             }
         }
         p.path.length -= t.trim_before;

@@ -194,7 +194,7 @@ bool build(const Transition& t, const PathPoint& a, const PathPoint& b, double t
 }  // namespace
 
 bool make_transition(const PathSegment& before, double before_room, const PathSegment& after, double after_room,
-                     double tolerance_mm, Transition& out) {
+                     double tolerance_mm, Transition& out, const ChainStart* chain) {
     if (!(tolerance_mm > 0) || before.shape == SegmentShape::quintic || after.shape == SegmentShape::quintic) {
         return false;
     }
@@ -211,7 +211,7 @@ bool make_transition(const PathSegment& before, double before_room, const PathSe
     // short lines of unequal lengths, equal trims would leave a piece of every longer line, a
     // straight piece (curvature 0) between two transitions, where the jerk terms must pay for
     // the curvature pulse. Taking the whole room lets the transitions meet at the lines' middles
-    // with a common curvature (set_end_states). Failing the tolerance, both shrink alike.
+    // with a common curvature (ChainStart). Failing the tolerance, both shrink alike.
     double t = std::max(before_room, after_room);
     for (int attempt = 0; attempt < max_attempts; ++attempt) {
         double trim_a = std::min(t, before_room);
@@ -225,6 +225,21 @@ bool make_transition(const PathSegment& before, double before_room, const PathSe
         out.replaced_after.length = trim_b;
         out.start = point_at(before, before.length - trim_a);
         out.end = point_at(after, trim_b);
+        out.chained = false;
+        if (chain != nullptr && trim_a == before.length) {
+            // `before` is eaten: start with the curvature of the turn between the outer ends of
+            // the two transitions that meet on it (see ChainStart).
+            const double length = 0.5 * (distance3(out.start.position, out.end.position) + trim_a + trim_b);
+            PathPoint a = out.start;
+            for (std::size_t i = 0; i < 3; ++i) {
+                a.d2[i] = (out.end.d1[i] - chain->entry_start_d1[i]) / (chain->entry_length + length);
+            }
+            if (build(out, a, out.end, tolerance_mm, out.curve, out.deviation_mm)) {
+                out.start = a;
+                out.chained = true;
+                return true;
+            }
+        }
         if (build(out, out.start, out.end, tolerance_mm, out.curve, out.deviation_mm)) return true;
         const double target = deviation_target * tolerance_mm;
         const double shrink = out.deviation_mm > target ? 0.9 * target / out.deviation_mm : 0.5;
