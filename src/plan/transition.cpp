@@ -129,10 +129,11 @@ double hull_verdict(const PathSegment& curve, const Transition& t, const AxisVec
         ctrl[4][i] = a0 + 4 * a1 / 5 + 6 * a2 / 10 + 4 * a3 / 10 + a4 / 5;
         ctrl[5][i] = a0 + a1 + a2 + a3 + a4 + a5;
     }
+    // The first and the last control point are A and B themselves (on the chord).
     double far = 0;
-    for (const auto& p : ctrl) {
+    for (std::size_t k = 1; k < 5; ++k) {
         AxisVector q;
-        for (std::size_t i = 0; i < 3; ++i) q[i] = p[i];
+        for (std::size_t i = 0; i < 3; ++i) q[i] = ctrl[k][i];
         far = std::max(far, to_chord(q, a, b));
     }
     // The velocity's control points 5 (b_{i+1} - b_i) / L along the mean of the end directions.
