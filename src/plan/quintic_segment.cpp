@@ -88,8 +88,11 @@ std::array<double, 5> slope_control_points(double c1, double c2, double c3, doub
 }
 
 //! A control-point bound is used as it is when it exceeds the larger end value by less than
-//! this (relative): on a gentle transition it is then practically exact, and sampling is saved.
+//! this, relative to that value or to 1 (|q'| is about 1, so an axis's slope is at most about 1):
+//! on a gentle transition it is then practically exact, and sampling is saved. An axis with a
+//! small slope never limits the speed or the acceleration much, so 1e-3 absolute is enough there.
 constexpr double tight_hull = 1e-3;
+bool tight(double hull, double ends) { return hull <= ends + tight_hull * std::max(ends, 1.0); }
 
 }  // namespace
 
@@ -113,7 +116,7 @@ DerivativeBounds quintic_bounds(const PathSegment& g) {
         double hull = 0;
         for (double c : control[i]) hull = std::max(hull, std::abs(c));
         const double ends = std::max(std::abs(control[i][0]), std::abs(control[i][4]));
-        if (hull <= ends * (1 + tight_hull)) {
+        if (tight(hull, ends)) {
             b.d1[i] = hull * (1 + bound_pad);
             continue;
         }
@@ -134,7 +137,7 @@ DerivativeBounds quintic_bounds(const PathSegment& g) {
     auto norm_at = [&](std::size_t k) {
         return std::sqrt(control[0][k] * control[0][k] + control[1][k] * control[1][k] + control[2][k] * control[2][k]);
     };
-    if (hull <= std::max(norm_at(0), norm_at(4)) * (1 + tight_hull)) {
+    if (tight(hull, std::max(norm_at(0), norm_at(4)))) {
         b.speed_factor = hull * (1 + bound_pad);
         return b;
     }

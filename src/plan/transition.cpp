@@ -130,12 +130,19 @@ double hull_verdict(const PathSegment& curve, const Transition& t, const AxisVec
         ctrl[5][i] = a0 + a1 + a2 + a3 + a4 + a5;
     }
     // The first and the last control point are A and B themselves (on the chord).
-    double far = 0;
+    double far2 = 0;
     for (std::size_t k = 1; k < 5; ++k) {
-        AxisVector q;
-        for (std::size_t i = 0; i < 3; ++i) q[i] = ctrl[k][i];
-        far = std::max(far, to_chord(q, a, b));
+        double along = 0;
+        for (std::size_t i = 0; i < 3; ++i) along += (ctrl[k][i] - a[i]) * ab[i];
+        const double f = std::clamp(along / ab2, 0.0, 1.0);
+        double d2 = 0;
+        for (std::size_t i = 0; i < 3; ++i) {
+            const double e = ctrl[k][i] - a[i] - f * ab[i];
+            d2 += e * e;
+        }
+        far2 = std::max(far2, d2);
     }
+    const double far = std::sqrt(far2);
     // The velocity's control points 5 (b_{i+1} - b_i) / L along the mean of the end directions.
     std::array<double, 3> mean{};
     double mean2 = 0;
