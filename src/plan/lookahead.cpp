@@ -27,8 +27,7 @@ bool joins(double segment_limit, double run_limit) {
 bool Lookahead::joins_last_run(const WindowSegment& segment) const {
     if (runs_.empty() || segments_.back().junction_max <= 0) return false;
     const WindowRun& run = runs_.back();
-    // Bounded so a run is never more than a quarter of the window (the forced commit keeps half).
-    if (run.count >= std::max<std::size_t>(1, window_ / 4)) return false;
+    if (run.count >= max_run_segments()) return false;
     const ProfileLimits& l = segment.limits;
     if (kind_ == ProfileKind::trapezoid) {
         // A trapezoid's acceleration may jump at any junction, so ending a run costs nothing:
@@ -56,7 +55,7 @@ bool Lookahead::lowers_last_run(const WindowSegment& segment, ProfileLimits& low
     // Trapezoid runs gain nothing from merging (joins_last_run); a lower segment starts a run.
     if (kind_ != ProfileKind::scurve || runs_.empty() || segments_.back().junction_max <= 0) return false;
     const WindowRun& run = runs_.back();
-    if (run.count >= std::max<std::size_t>(1, window_ / 4)) return false;
+    if (run.count >= max_run_segments()) return false;
     const ProfileLimits& l = segment.limits;
     const ProfileLimits& first = run.first_limits;
     // Within run_spread of the run's first limits both ways, so the run never drifts far below
@@ -81,6 +80,9 @@ bool Lookahead::lowers_last_run(const WindowSegment& segment, ProfileLimits& low
     const double after = max_end_speed(run.length + segment.path.length, 0.0, lowered, kind_);
     return after >= before;
 }
+
+//! Bounded so a run is never more than a quarter of the window (the forced commit keeps half).
+std::size_t Lookahead::max_run_segments() const { return std::max<std::size_t>(1, window_ / 4); }
 
 double Lookahead::stop_speed(const WindowRun& run) const {
     if (run.stop_speed < 0 || full_passes_) run.stop_speed = max_end_speed(run.length, 0.0, run.limits, kind_);
@@ -151,17 +153,20 @@ void Lookahead::plan(std::size_t keep_at_most) {
     // bound[k] is a function of run k's junction_max and run k + 1's length, limits and bound:
     // before dirty_from_, where the runs are as the last pass left them, the pass can stop at
     // the first bound that comes out as it was (all earlier ones would too).
-    bool next_changed = runs_[n - 1].bound != 0 || n - 1 >= dirty_from_;
+    bool next_changed = runs_[n - 1].bound != 0 || runs_[n - 1].bound_final != finished_ || n - 1 >= dirty_from_;
     runs_[n - 1].bound = 0;
+    runs_[n - 1].bound_final = finished_;
     for (std::size_t k = n - 1; k-- > 0;) {
         if (!next_changed && k + 1 < dirty_from_) break;
         const WindowRun& next = runs_[k + 1];
         WindowRun& here = runs_[k];
         const double old_bound = here.bound;
+        const bool old_final = here.bound_final;
         // max_end_speed(d, v) >= v: once the next bound reaches this junction's limit, no call.
         if (next.bound >= here.junction_max) {
             here.bound = here.junction_max;
-            next_changed = here.bound != old_bound;
+            here.bound_final = true;
+            next_changed = here.bound != old_bound || !old_final;
             continue;
         }
         // The highest speed from which the next run can brake to its bound *or stop*. With jerk
@@ -176,7 +181,10 @@ void Lookahead::plan(std::size_t keep_at_most) {
             brake_from = std::max(brake_from, stop_speed(next));
         }
         here.bound = std::min(here.junction_max, brake_from);
-        next_changed = here.bound != old_bound;
+        // Held by its own junction limit, or by braking for a later run whose bound is final (a
+        // junction limit ahead, not the window's provisional stop): more segments cannot raise it.
+        here.bound_final = here.bound >= here.junction_max || next.bound_final;
+        next_changed = here.bound != old_bound || here.bound_final != old_final;
     }
     dirty_from_ = n;
     // Forward: commit runs while their end speed is final, i.e. no later segment could raise it
@@ -188,11 +196,12 @@ void Lookahead::plan(std::size_t keep_at_most) {
         bool final_speed = finished_;
         if (start_speed_ >= r.bound) {
             v_end = r.bound;
-            final_speed = final_speed || r.bound >= r.junction_max;
+            final_speed = final_speed || (final_bound_commits_ ? r.bound_final : r.bound >= r.junction_max);
         } else {
             const double reachable = max_end_speed(r.length, start_speed_, r.limits, kind_);
             v_end = std::min(r.bound, reachable);
-            final_speed = final_speed || r.bound >= std::min(r.junction_max, reachable);
+            final_speed = final_speed || (final_bound_commits_ && r.bound_final) ||
+                          r.bound >= std::min(r.junction_max, reachable);
         }
         if (!final_speed && segments_.size() <= keep_at_most) break;
         commit_front(v_end);

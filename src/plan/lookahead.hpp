@@ -82,6 +82,8 @@ struct WindowRun {
     ProfileLimits first_limits;  //!< its first segment's (times run_margin); limits never drift far below
     double junction_max = 0;  //!< mm/s at its end
     double bound = 0;         //!< mm/s, from the backward pass: the end speed it can still stop from
+    //! The bound no longer depends on the window's provisional stop at its end (see plan()).
+    bool bound_final = false;
     //! mm/s, max_end_speed(length, 0, limits) once computed, < 0 until then; reset whenever
     //! length or limits change.
     mutable double stop_speed = -1;
@@ -108,6 +110,11 @@ public:
     //! Tests only: every backward pass recomputes every bound, and no stop speed is taken from
     //! the cache, as a reference for the incremental passes (whose results must be identical).
     void set_full_passes(bool full) { full_passes_ = full; }
+    //! Tests only: commit a run only when its own junction limit or its speed-up holds its end
+    //! speed (or the window overflows), not as soon as a junction limit further on does.
+    void set_final_bound_commits(bool on) { final_bound_commits_ = on; }
+    //! Segments in the window now (tests: how far planning lags behind the input).
+    [[nodiscard]] std::size_t window_segments() const { return segments_.size(); }
 
 private:
     void plan(std::size_t keep_at_most);
@@ -117,6 +124,7 @@ private:
     //! its own by lowering its limits to the segment's (`lowered`) without lowering any bound.
     [[nodiscard]] bool lowers_last_run(const WindowSegment& segment, ProfileLimits& lowered) const;
     void emit_event(const WindowEvent& event, const AxisVector& position);
+    [[nodiscard]] std::size_t max_run_segments() const;
     //! max_end_speed(run.length, 0, run.limits), cached in the run.
     [[nodiscard]] double stop_speed(const WindowRun& run) const;
     //! Run k (from the front) or a later one changed (length, limits or junction_max) since
@@ -140,6 +148,7 @@ private:
     //! the last backward pass: a bound there changes only when the next run's bound does.
     std::size_t dirty_from_ = 0;
     bool full_passes_ = false;
+    bool final_bound_commits_ = true;
 };
 
 }  // namespace nckit::plan_detail

@@ -30,7 +30,10 @@ struct Planner::Impl {
     struct Pending {
         PathSegment path;
         double full_length = 0;  //!< programmed length, for the half-line rule
-        ProfileLimits limits;
+        //! Computed when first needed: a short line of a CAM chain is usually eaten whole by the
+        //! transitions at its ends, and then its own limits never matter.
+        std::optional<ProfileLimits> limits;
+        double normal_share = 0.5;  //!< of the acceleration, for the curvature term
         double feed_mm_s = 0;    //!< +inf for rapids
         bool blendable = false;  //!< a G1 line or a G2/G3 arc: its ends may be rounded
         PathControl control;
@@ -88,7 +91,7 @@ struct Planner::Impl {
             p.entry.reset();
         }
         if (p.path.length > min_trimmed_length) {
-            add_segment(std::move(p.path), p.limits, junction_max, p.where, p.sequence_number, false,
+            add_segment(std::move(p.path), limits_of(p), junction_max, p.where, p.sequence_number, false,
                         std::move(pending_events));
         } else {
             for (WindowEvent& e : pending_events) lookahead.add_event(std::move(e), position);
@@ -97,7 +100,7 @@ struct Planner::Impl {
         pending.reset();
     }
 
-    void connect(Pending next) {
+    void connect(Pending&& next) {
         if (pending) {
             Pending& p = *pending;
             // Trapezoids may step the acceleration, so only the direction must be continuous;
@@ -108,7 +111,7 @@ struct Planner::Impl {
             } else if (jerk_limited ? plan_detail::smooth_join(p.path, next.path,
                                                                plan_detail::smooth_direction_tolerance, true)
                                     : plan_detail::tangent(p.path, next.path)) {
-                release_pending(p.limits.max_velocity);
+                release_pending(limits_of(p).max_velocity);
             } else if (p.blendable && next.blendable) {
                 const double tolerance = p.control.tolerance_mm > 0 ? p.control.tolerance_mm
                                                                     : options.default_blend_tolerance_mm;
@@ -135,36 +138,40 @@ struct Planner::Impl {
     //! Any other corner, and every join with a jump in curvature under a jerk limit: a quintic
     //! transition within the tolerance. Each side gives at most half its programmed length.
     bool transition(Pending& p, Pending& next, double tolerance) {
-        auto t = plan_detail::make_transition(p.path, 0.5 * p.full_length, next.path, 0.5 * next.path.length,
-                                              tolerance);
-        if (!t) return false;
-        if (p.entry && !(p.path.length - t->trim_before > 0)) {
+        // Built in place: a transition is a large value, and this runs once per move of a chain.
+        auto xyz = [](const AxisVector& v) { return std::array<double, 3>{v[0], v[1], v[2]}; };
+        plan_detail::ChainStart chain;
+        if (p.entry) {
+            chain.entry_length = p.entry->curve.length;
+            chain.entry_start_d1 = xyz(p.entry->start.d1);
+        }
+        const double before_room = 0.5 * p.full_length;
+        const double after_room = 0.5 * next.path.length;
+        auto& t = next.entry.emplace();
+        if (!plan_detail::make_transition(p.path, before_room, next.path, after_room, tolerance, t,
+                                          p.entry ? &chain : nullptr)) {
+            next.entry.reset();
+            return false;
+        }
+        if (t.chained) {
             // p is eaten by its two transitions: they meet at its middle, in its direction, with
-            // the curvature of the turn between their outer ends (transition.hpp); failing the
-            // tolerance, as built (no curvature there).
-            std::array<double, 3> k{};
-            std::array<double, 3> own{};
-            const double span = p.entry->curve.length + t->curve.length;
-            for (std::size_t i = 0; i < 3; ++i) {
-                k[i] = (t->end.d1[i] - p.entry->start.d1[i]) / span;
-                own[i] = t->start.d1[i];
-            }
-            auto xyz = [](const AxisVector& v) { return std::array<double, 3>{v[0], v[1], v[2]}; };
-            plan_detail::Transition entry = *p.entry;
-            plan_detail::Transition exit = *t;
-            if (plan_detail::set_end_states(entry, xyz(entry.start.d1), xyz(entry.start.d2), own, k, tolerance) &&
-                plan_detail::set_end_states(exit, own, k, xyz(exit.end.d1), xyz(exit.end.d2), tolerance)) {
-                *p.entry = std::move(entry);
-                *t = std::move(exit);
+            // the curvature of the turn between their outer ends (transition.hpp). The one into p
+            // is rebuilt to end there; failing the tolerance, both stay as built (no curvature).
+            const auto entry = plan_detail::with_end_states(*p.entry, xyz(p.entry->start.d1), xyz(p.entry->start.d2),
+                                                            xyz(t.start.d1), xyz(t.start.d2), tolerance);
+            if (entry) {
+                plan_detail::apply(*p.entry, *entry);
+            } else if (!plan_detail::make_transition(p.path, before_room, next.path, after_room, tolerance, t)) {
+                next.entry.reset();
+                return false;
             }
         }
-        p.path.length -= t->trim_before;
+        p.path.length -= t.trim_before;
         const SourceLocation where = p.where;
         const std::int64_t number = p.sequence_number;
         const double feed = std::min(p.feed_mm_s, next.feed_mm_s);
-        release_pending(p.limits.max_velocity);
-        next.path = trim_start(next.path, t->trim_after);
-        next.entry = std::move(*t);
+        release_pending(p.path.length > min_trimmed_length ? limits_of(p).max_velocity : 0.0);
+        next.path = trim_start(next.path, t.trim_after);
         next.entry_feed_mm_s = feed;
         next.entry_where = where;
         next.entry_number = number;
@@ -178,15 +185,21 @@ struct Planner::Impl {
             segment_limits(curve, machine, std::min(p.feed_mm_s, next.feed_mm_s), kind, normal_share);
         const SourceLocation where = p.where;
         const std::int64_t number = p.sequence_number;
-        release_pending(p.limits.max_velocity);
+        release_pending(limits_of(p).max_velocity);
         add_segment(curve, limits, limits.max_velocity, where, number, true, {});
         next.path = trim_start(next.path, trim_after);
     }
 
+    [[nodiscard]] ProfileLimits limits_of(Pending& p) const {
+        if (!p.limits) p.limits = segment_limits(p.path, machine, p.feed_mm_s, kind, p.normal_share);
+        return *p.limits;
+    }
+
     bool check_axes(const PathSegment& path, const SourceLocation& where) {
-        const DerivativeBounds b = derivative_bounds(path);
+        // A line moves exactly the axes its rate moves; other shapes by their bounds.
+        const AxisVector moving = path.shape == SegmentShape::line ? path.rate : derivative_bounds(path).d1;
         for (std::size_t i = 0; i < axis_count; ++i) {
-            if (b.d1[i] > 0 && machine.find(static_cast<Axis>(i)) == nullptr) {
+            if (moving[i] != 0 && machine.find(static_cast<Axis>(i)) == nullptr) {
                 diagnostics.push_back(error_at(where, "unknown-axis",
                                                std::string("move of axis ") + axis_letters[i] +
                                                    ", which the machine does not have"));
@@ -212,7 +225,7 @@ struct Planner::Impl {
         const double share = kind == ProfileKind::trapezoid && path.shape == SegmentShape::arc
                                  ? trapezoid_blend_normal_share
                                  : 0.5;
-        next.limits = segment_limits(path, machine, feed_mm_s, kind, share);
+        next.normal_share = share;
         next.full_length = path.length;
         next.path = std::move(path);
         next.feed_mm_s = feed_mm_s;

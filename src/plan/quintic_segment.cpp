@@ -1,5 +1,6 @@
 // Quintic transitions: construction by Hermite interpolation, and bounds of their derivatives.
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "nckit/plan/path_segment.hpp"
@@ -74,6 +75,25 @@ double max_abs_cubic(double c0, double c1, double c2, double c3, double l) {
 constexpr int bound_samples = 24;
 constexpr double bound_pad = 1e-12;
 
+//! The control points (Bernstein coefficients on u = s/L in [0, 1]) of q' = c1 + 2c2 s + 3c3 s²
+//! + 4c4 s³ + 5c5 s⁴ on one axis: q' lies between the smallest and the largest of them.
+std::array<double, 5> slope_control_points(double c1, double c2, double c3, double c4, double c5, double l) {
+    // Power coefficients in u, then b_i = sum_k C(i,k)/C(4,k) e_k.
+    const double e0 = c1;
+    const double e1 = 2 * c2 * l;
+    const double e2 = 3 * c3 * l * l;
+    const double e3 = 4 * c4 * l * l * l;
+    const double e4 = 5 * c5 * l * l * l * l;
+    return {e0, e0 + e1 / 4, e0 + e1 / 2 + e2 / 6, e0 + 3 * e1 / 4 + e2 / 2 + e3 / 4, e0 + e1 + e2 + e3 + e4};
+}
+
+//! A control-point bound is used as it is when it exceeds the larger end value by less than
+//! this, relative to that value or to 1 (|q'| is about 1, so an axis's slope is at most about 1):
+//! on a gentle transition it is then practically exact, and sampling is saved. An axis with a
+//! small slope never limits the speed or the acceleration much, so 1e-3 absolute is enough there.
+constexpr double tight_hull = 1e-3;
+bool tight(double hull, double ends) { return hull <= ends + tight_hull * std::max(ends, 1.0); }
+
 }  // namespace
 
 DerivativeBounds quintic_bounds(const PathSegment& g) {
@@ -81,6 +101,8 @@ DerivativeBounds quintic_bounds(const PathSegment& g) {
     const double l = g.length;
     for (std::size_t i = 3; i < axis_count; ++i) b.d1[i] = std::abs(g.rate[i]);
     double d2_norm2 = 0;
+    const double h = l / bound_samples;
+    std::array<std::array<double, 5>, 3> control{};
     for (std::size_t i = 0; i < 3; ++i) {
         const double c1 = g.rate[i];
         const double c2 = g.poly[0][i];
@@ -90,16 +112,35 @@ DerivativeBounds quintic_bounds(const PathSegment& g) {
         b.d3[i] = max_abs_quadratic(6 * c3, 24 * c4, 60 * c5, l) * (1 + bound_pad);
         b.d2[i] = max_abs_cubic(2 * c2, 6 * c3, 12 * c4, 20 * c5, l) * (1 + bound_pad);
         d2_norm2 += b.d2[i] * b.d2[i];
+        control[i] = slope_control_points(c1, c2, c3, c4, c5, l);
+        double hull = 0;
+        for (double c : control[i]) hull = std::max(hull, std::abs(c));
+        const double ends = std::max(std::abs(control[i][0]), std::abs(control[i][4]));
+        if (tight(hull, ends)) {
+            b.d1[i] = hull * (1 + bound_pad);
+            continue;
+        }
         // q' sampled; between samples it moves by at most d2 · h/2 from the nearer one.
-        const double h = l / bound_samples;
         double m = 0;
         for (int k = 0; k <= bound_samples; ++k) {
             const double s = h * k;
             m = std::max(m, std::abs(c1 + s * (2 * c2 + s * (3 * c3 + s * (4 * c4 + s * 5 * c5)))));
         }
-        b.d1[i] = (m + b.d2[i] * h / 2) * (1 + bound_pad);
+        b.d1[i] = std::min(hull, m + b.d2[i] * h / 2) * (1 + bound_pad);
     }
-    const double h = l / bound_samples;
+    // |p'| is convex in p', so it is at most the largest norm of the control points.
+    double hull = 0;
+    for (std::size_t k = 0; k < 5; ++k) {
+        hull = std::max(hull, std::sqrt(control[0][k] * control[0][k] + control[1][k] * control[1][k] +
+                                        control[2][k] * control[2][k]));
+    }
+    auto norm_at = [&](std::size_t k) {
+        return std::sqrt(control[0][k] * control[0][k] + control[1][k] * control[1][k] + control[2][k] * control[2][k]);
+    };
+    if (tight(hull, std::max(norm_at(0), norm_at(4)))) {
+        b.speed_factor = hull * (1 + bound_pad);
+        return b;
+    }
     double speed = 0;
     for (int k = 0; k <= bound_samples; ++k) {
         const double s = h * k;
@@ -111,7 +152,7 @@ DerivativeBounds quintic_bounds(const PathSegment& g) {
         }
         speed = std::max(speed, std::sqrt(speed2));
     }
-    b.speed_factor = (speed + std::sqrt(d2_norm2) * h / 2) * (1 + bound_pad);
+    b.speed_factor = std::min(hull, speed + std::sqrt(d2_norm2) * h / 2) * (1 + bound_pad);
     return b;
 }
 

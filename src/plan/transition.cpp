@@ -77,12 +77,101 @@ bool smooth_join(const PathSegment& before, const PathSegment& after, double dir
 
 namespace {
 
+//! A rigorous, cheap verdict for a transition between two lines (the corner C between the cut
+//! points A and B), used before sampling: a polynomial curve lies in the convex hull of its
+//! Bézier control points, and the distance to the chord A–B is convex, so no point of the curve
+//! is farther from that chord than the farthest control point. Every point of the chord is
+//! within dist(C, line AB) of the two lines when the triangle's angles at A and B are acute.
+//! Likewise the curve's velocity dq/ds lies in the hull of the derivative's control points: when
+//! all of them have a component of at least min_parametric_speed along one direction, so has
+//! the curve everywhere. Returns the deviation bound, or a negative value when it cannot decide
+//! (then the samples do).
+double hull_verdict(const PathSegment& curve, const Transition& t, const AxisVector& a, const AxisVector& b) {
+    if (t.replaced_before.shape != SegmentShape::line || t.replaced_after.shape != SegmentShape::line) return -1;
+    const AxisVector& c = t.replaced_after.origin;  // a line's start
+    std::array<double, 3> ab{};
+    std::array<double, 3> ac{};
+    std::array<double, 3> bc{};
+    double ab2 = 0;
+    for (std::size_t i = 0; i < 3; ++i) {
+        ab[i] = b[i] - a[i];
+        ac[i] = c[i] - a[i];
+        bc[i] = c[i] - b[i];
+        ab2 += ab[i] * ab[i];
+    }
+    double dot_a = 0;
+    double dot_b = 0;
+    for (std::size_t i = 0; i < 3; ++i) {
+        dot_a += ac[i] * ab[i];
+        dot_b -= bc[i] * ab[i];
+    }
+    if (!(ab2 > 0 && dot_a > 0 && dot_b > 0)) return -1;
+    // Height of C over the line AB.
+    double h2 = 0;
+    for (std::size_t i = 0; i < 3; ++i) {
+        const double e = ac[i] - dot_a / ab2 * ab[i];
+        h2 += e * e;
+    }
+    // Bernstein coefficients of the quintic in u = s/L: b_i = sum_k C(i,k)/C(5,k) a_k.
+    const double l = curve.length;
+    std::array<std::array<double, 3>, 6> ctrl{};
+    for (std::size_t i = 0; i < 3; ++i) {
+        const double a0 = curve.origin[i];
+        const double a1 = curve.rate[i] * l;
+        const double a2 = curve.poly[0][i] * l * l;
+        const double a3 = curve.poly[1][i] * l * l * l;
+        const double a4 = curve.poly[2][i] * l * l * l * l;
+        const double a5 = curve.poly[3][i] * l * l * l * l * l;
+        ctrl[0][i] = a0;
+        ctrl[1][i] = a0 + a1 / 5;
+        ctrl[2][i] = a0 + 2 * a1 / 5 + a2 / 10;
+        ctrl[3][i] = a0 + 3 * a1 / 5 + 3 * a2 / 10 + a3 / 10;
+        ctrl[4][i] = a0 + 4 * a1 / 5 + 6 * a2 / 10 + 4 * a3 / 10 + a4 / 5;
+        ctrl[5][i] = a0 + a1 + a2 + a3 + a4 + a5;
+    }
+    // The first and the last control point are A and B themselves (on the chord).
+    double far2 = 0;
+    for (std::size_t k = 1; k < 5; ++k) {
+        double along = 0;
+        for (std::size_t i = 0; i < 3; ++i) along += (ctrl[k][i] - a[i]) * ab[i];
+        const double f = std::clamp(along / ab2, 0.0, 1.0);
+        double d2 = 0;
+        for (std::size_t i = 0; i < 3; ++i) {
+            const double e = ctrl[k][i] - a[i] - f * ab[i];
+            d2 += e * e;
+        }
+        far2 = std::max(far2, d2);
+    }
+    const double far = std::sqrt(far2);
+    // The velocity's control points 5 (b_{i+1} - b_i) / L along the mean of the end directions.
+    std::array<double, 3> mean{};
+    double mean2 = 0;
+    for (std::size_t i = 0; i < 3; ++i) {
+        mean[i] = ab[i];
+        mean2 += mean[i] * mean[i];
+    }
+    const double inv = 1.0 / std::sqrt(mean2);
+    for (std::size_t k = 0; k < 5; ++k) {
+        double along = 0;
+        for (std::size_t i = 0; i < 3; ++i) along += 5 * (ctrl[k + 1][i] - ctrl[k][i]) / l * mean[i] * inv;
+        if (!(along >= min_parametric_speed)) return -1;
+    }
+    return far + std::sqrt(h2);
+}
+
 //! Builds the curve between the states and measures it against the replaced path; false when it
 //! leaves the tolerance (target fraction) or nearly stops moving along its parameter.
-bool build(Transition& t, const PathPoint& a, const PathPoint& b, double tolerance_mm) {
+//! The curve goes to `curve` and its measured deviation to `deviation_mm` (also on failure).
+bool build(const Transition& t, const PathPoint& a, const PathPoint& b, double tolerance_mm, PathSegment& curve,
+           double& deviation_mm) {
     const double chord = distance3(a.position, b.position);
     const double length = 0.5 * (chord + t.trim_before + t.trim_after);
-    PathSegment curve = make_quintic(a, b, length, AxisVector{});
+    curve = make_quintic(a, b, length, AxisVector{});
+    const double bound = hull_verdict(curve, t, a.position, b.position);
+    if (bound >= 0 && bound <= deviation_target * tolerance_mm) {
+        deviation_mm = bound;
+        return true;
+    }
     const Piece tail = piece_of(t.replaced_before, 0.0, t.replaced_before.length);
     const Piece head = piece_of(t.replaced_after, 0.0, t.replaced_after.length);
     double deviation = 0;
@@ -106,64 +195,88 @@ bool build(Transition& t, const PathPoint& a, const PathPoint& b, double toleran
         slowest = std::min(slowest, std::sqrt(speed2));
         if (deviation > tolerance_mm) break;
     }
-    t.deviation_mm = deviation;
-    if (!(deviation <= deviation_target * tolerance_mm && slowest >= min_parametric_speed)) return false;
-    t.curve = curve;
-    t.start = a;
-    t.end = b;
-    return true;
+    deviation_mm = deviation;
+    return deviation <= deviation_target * tolerance_mm && slowest >= min_parametric_speed;
 }
 
 }  // namespace
 
-std::optional<Transition> make_transition(const PathSegment& before, double before_room, const PathSegment& after,
-                                          double after_room, double tolerance_mm) {
+bool make_transition(const PathSegment& before, double before_room, const PathSegment& after, double after_room,
+                     double tolerance_mm, Transition& out, const ChainStart* chain) {
     if (!(tolerance_mm > 0) || before.shape == SegmentShape::quintic || after.shape == SegmentShape::quintic) {
-        return std::nullopt;
+        return false;
     }
     // The quintic covers XYZ; any other axis would arrive at the wrong place (its length differs
     // from the trims), so they must stand.
     for (std::size_t i = 3; i < axis_count; ++i) {
-        if (before.rate[i] != 0 || after.rate[i] != 0) return std::nullopt;
+        if (before.rate[i] != 0 || after.rate[i] != 0) return false;
     }
     before_room = std::min(before_room, before.length);
     after_room = std::min(after_room, after.length);
     // A sliver of `before` left over would be a segment of its own: take it into the curve.
     if (before.length - before_room < min_leftover_mm) before_room = before.length;
-    double t = std::min(before_room, after_room);
+    // The first attempt takes all the room on both sides, even when it differs: on a chain of
+    // short lines of unequal lengths, equal trims would leave a piece of every longer line, a
+    // straight piece (curvature 0) between two transitions, where the jerk terms must pay for
+    // the curvature pulse. Taking the whole room lets the transitions meet at the lines' middles
+    // with a common curvature (ChainStart). Failing the tolerance, both shrink alike.
+    double t = std::max(before_room, after_room);
     for (int attempt = 0; attempt < max_attempts; ++attempt) {
         double trim_a = std::min(t, before_room);
         if (before.length - trim_a < min_leftover_mm) trim_a = before.length;
         const double trim_b = std::min(t, after_room);
-        if (!(trim_a > min_trim_mm && trim_b > min_trim_mm)) return std::nullopt;
-        Transition out;
+        if (!(trim_a > min_trim_mm && trim_b > min_trim_mm)) return false;
         out.trim_before = trim_a;
         out.trim_after = trim_b;
         out.replaced_before = trim_start(before, before.length - trim_a);
         out.replaced_after = after;
         out.replaced_after.length = trim_b;
-        if (build(out, point_at(before, before.length - trim_a), point_at(after, trim_b), tolerance_mm)) return out;
+        out.start = point_at(before, before.length - trim_a);
+        out.end = point_at(after, trim_b);
+        out.chained = false;
+        if (chain != nullptr && trim_a == before.length) {
+            // `before` is eaten: start with the curvature of the turn between the outer ends of
+            // the two transitions that meet on it (see ChainStart).
+            const double length = 0.5 * (distance3(out.start.position, out.end.position) + trim_a + trim_b);
+            PathPoint a = out.start;
+            for (std::size_t i = 0; i < 3; ++i) {
+                a.d2[i] = (out.end.d1[i] - chain->entry_start_d1[i]) / (chain->entry_length + length);
+            }
+            if (build(out, a, out.end, tolerance_mm, out.curve, out.deviation_mm)) {
+                out.start = a;
+                out.chained = true;
+                return true;
+            }
+        }
+        if (build(out, out.start, out.end, tolerance_mm, out.curve, out.deviation_mm)) return true;
         const double target = deviation_target * tolerance_mm;
         const double shrink = out.deviation_mm > target ? 0.9 * target / out.deviation_mm : 0.5;
         t = std::max(trim_a, trim_b) * std::clamp(shrink, 0.05, 0.8);
     }
-    return std::nullopt;
+    return false;
 }
 
-bool set_end_states(Transition& transition, const std::array<double, 3>& start_d1, const std::array<double, 3>& start_d2,
-                    const std::array<double, 3>& end_d1, const std::array<double, 3>& end_d2, double tolerance_mm) {
-    PathPoint a = transition.start;
-    PathPoint b = transition.end;
+std::optional<Rebuilt> with_end_states(const Transition& transition, const std::array<double, 3>& start_d1,
+                                       const std::array<double, 3>& start_d2, const std::array<double, 3>& end_d1,
+                                       const std::array<double, 3>& end_d2, double tolerance_mm) {
+    Rebuilt out;
+    out.start = transition.start;
+    out.end = transition.end;
     for (std::size_t i = 0; i < 3; ++i) {
-        a.d1[i] = start_d1[i];
-        a.d2[i] = start_d2[i];
-        b.d1[i] = end_d1[i];
-        b.d2[i] = end_d2[i];
+        out.start.d1[i] = start_d1[i];
+        out.start.d2[i] = start_d2[i];
+        out.end.d1[i] = end_d1[i];
+        out.end.d2[i] = end_d2[i];
     }
-    Transition trial = transition;
-    if (!build(trial, a, b, tolerance_mm)) return false;
-    transition = trial;
-    return true;
+    if (!build(transition, out.start, out.end, tolerance_mm, out.curve, out.deviation_mm)) return std::nullopt;
+    return out;
+}
+
+void apply(Transition& transition, const Rebuilt& rebuilt) {
+    transition.curve = rebuilt.curve;
+    transition.start = rebuilt.start;
+    transition.end = rebuilt.end;
+    transition.deviation_mm = rebuilt.deviation_mm;
 }
 
 }  // namespace nckit::plan_detail

@@ -3,6 +3,7 @@
 // curvature: a quintic that leaves `before` and joins `after` with the same position, direction
 // and curvature vector, so the axes' velocity and acceleration stay continuous through it at any
 // speed, and that stays within the path tolerance of the programmed path.
+#include <array>
 #include <optional>
 
 #include "nckit/plan/path_segment.hpp"
@@ -30,6 +31,7 @@ struct Transition {
     PathPoint end;            //!< and arrives at (on after)
     PathSegment replaced_before;  //!< the programmed path it replaces: before's tail,
     PathSegment replaced_after;   //!< and after's head
+    bool chained = false;         //!< starts with a ChainStart's curvature (make_transition)
 };
 
 //! The same transition with the direction and curvature vectors (dq/ds and d²q/ds² on XYZ) at
@@ -39,17 +41,41 @@ struct Transition {
 //! curvature of the turn between them (instead of the line's own direction and 0), the chain
 //! follows the curve the polyline samples, and its speed is set by that curve's radius rather
 //! than by a curvature pulse at every vertex and the rounding noise of the written decimals.
-[[nodiscard]] bool set_end_states(Transition& transition, const std::array<double, 3>& start_d1,
-                                  const std::array<double, 3>& start_d2, const std::array<double, 3>& end_d1,
-                                  const std::array<double, 3>& end_d2, double tolerance_mm);
+struct Rebuilt {
+    PathSegment curve;
+    PathPoint start;
+    PathPoint end;
+    double deviation_mm = 0;
+};
+[[nodiscard]] std::optional<Rebuilt> with_end_states(const Transition& transition,
+                                                     const std::array<double, 3>& start_d1,
+                                                     const std::array<double, 3>& start_d2,
+                                                     const std::array<double, 3>& end_d1,
+                                                     const std::array<double, 3>& end_d2, double tolerance_mm);
+//! The transition takes the rebuilt curve and end states.
+void apply(Transition& transition, const Rebuilt& rebuilt);
 
 //! The transition that trims at most before_room from before's end and after_room from
 //! after's start (a leftover of before shorter than min_leftover_mm is taken whole), as long
 //! as its deviation stays within tolerance_mm; none when the axes beyond XYZ move, when the
 //! measured axes are not XYZ, or when no trim long enough fits the tolerance.
-[[nodiscard]] std::optional<Transition> make_transition(const PathSegment& before, double before_room,
-                                                        const PathSegment& after, double after_room,
-                                                        double tolerance_mm);
+//! The transition into `before`, when there is one: a chain of transitions that eats whole
+//! short lines (a CAM polyline) meets at the lines' middles, where the two may agree on any
+//! state. With the curvature of the turn between their outer ends, (q'_out - q'_in) / (L1 + L2),
+//! instead of the line's own 0, the chain follows the curve the polyline samples, and its speed
+//! is set by that curve's radius rather than by a curvature pulse at every vertex.
+struct ChainStart {
+    double entry_length = 0;                //!< L1, the parameter length of the transition into before
+    std::array<double, 3> entry_start_d1{};  //!< q'_in, its direction where it leaves the move before
+};
+
+//! The transition is written to `out` (which it leaves undefined when there is none). With
+//! `chain`, when `before` is eaten whole, the curve first tries to start with the chain's
+//! curvature (out.chained tells whether it does; the transition into before must then be rebuilt
+//! to end in out.start's state, with_end_states).
+[[nodiscard]] bool make_transition(const PathSegment& before, double before_room, const PathSegment& after,
+                                   double after_room, double tolerance_mm, Transition& out,
+                                   const ChainStart* chain = nullptr);
 
 //! Pieces of path left between transitions shorter than this (mm) join the transition.
 inline constexpr double min_leftover_mm = 1e-3;

@@ -3,6 +3,7 @@
 // exactly the pieces of full passes that recompute everything.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -17,9 +18,11 @@ using plan_detail::Lookahead;
 using plan_detail::WindowEvent;
 using plan_detail::WindowSegment;
 
-std::vector<TrajectoryPiece> run_window(ProfileKind kind, std::size_t window, unsigned seed, bool full) {
+std::vector<TrajectoryPiece> run_window(ProfileKind kind, std::size_t window, unsigned seed, bool full,
+                                        bool final_bound_commits = true, std::size_t* most_in_window = nullptr) {
     Lookahead lookahead(kind, window);
     lookahead.set_full_passes(full);
+    lookahead.set_final_bound_commits(final_bound_commits);
     std::mt19937_64 random(seed);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     // A few limit sets, each also slightly perturbed, so runs join, lower and break.
@@ -47,6 +50,7 @@ std::vector<TrajectoryPiece> run_window(ProfileKind kind, std::size_t window, un
             lookahead.add_event(e, to);
         }
         at = to;
+        if (most_in_window != nullptr) *most_in_window = std::max(*most_in_window, lookahead.window_segments());
         auto& queue = lookahead.output();
         while (!queue.empty()) {
             out.push_back(queue.front());
@@ -84,6 +88,30 @@ TEST(Lookahead, IncrementalPassesMatchFullPasses) {
                     ASSERT_EQ(a.sequence_number, b.sequence_number) << i;
                 }
             }
+        }
+    }
+}
+
+// A run whose end speed is held by a junction limit further on (not by the window's provisional
+// stop) is committed at once: the pieces are those of a window that waits until the run's own
+// junction limit holds it or the window overflows, while far fewer segments wait in the window.
+TEST(Lookahead, RunsHeldByALaterJunctionLimitLeaveTheWindowEarly) {
+    for (ProfileKind kind : {ProfileKind::scurve, ProfileKind::trapezoid}) {
+        for (unsigned seed : {1U, 2U, 3U}) {
+            std::size_t early_most = 0;
+            std::size_t late_most = 0;
+            const auto early = run_window(kind, 10000, seed, false, true, &early_most);
+            const auto late = run_window(kind, 10000, seed, false, false, &late_most);
+            ASSERT_EQ(early.size(), late.size());
+            for (std::size_t i = 0; i < early.size(); ++i) {
+                ASSERT_EQ(early[i].start_time_s, late[i].start_time_s) << i;
+                ASSERT_EQ(early[i].duration_s, late[i].duration_s) << i;
+                ASSERT_EQ(early[i].profile.end_velocity, late[i].profile.end_velocity) << i;
+            }
+            // The late window holds nearly the whole input (its junction limits are mostly at
+            // the segments' speed limits, which hold the bounds from further on).
+            EXPECT_LE(early_most, late_most);
+            EXPECT_LT(early_most, 1000U);
         }
     }
 }
