@@ -4,7 +4,7 @@ O1000 (ECCENTRIC SHAFT - TURNED WITHOUT AN ECCENTRIC FIXTURE)
 (        --library examples/eccentric/library                                              )
 ( Blank 60 mm, eccentric cylinder R20 offset 3 mm from the blank axis, Z 0 to -30.          )
 ( X follows the spindle angle by the law of cosines; see O9100 in the library folder.       )
-N10 G21 G18 G90 G40
+N10 G21 G18 G40
 N20 G10 L2 P1 Z-20.                 (part face 20 mm from machine Z0)
 N30 G54 G97 S60 M3                  (60 rpm: the X slide must follow 2e at the spindle frequency)
 N40 T1

@@ -108,6 +108,16 @@ void read_machine(const toml::table& table, MachineConfig& config, ConfigSink& s
     if (auto i = reader.choice("cutter_comp_startup", Need::optional, "cutter_comp_startup", {"type_b", "type_a"})) {
         config.cutter_comp_startup = startups[*i];
     }
+    constexpr std::array systems{GCodeSystem::a, GCodeSystem::b, GCodeSystem::c};
+    if (auto i = reader.choice("gcode_system", Need::optional, "gcode_system", {"A", "B", "C"})) {
+        config.gcode_system = systems[*i];
+    }
+    if (std::optional<std::string> codes = reader.text("startup_gcodes", Need::optional)) {
+        // Only G words: the interpreter reads them as a block before the program and reports a
+        // code it does not know at this key's place.
+        config.startup_gcodes = *codes;
+        config.startup_gcodes_at = sink.at(reader.region_of("startup_gcodes"));
+    }
     constexpr std::array profiles{ProfileKind::scurve, ProfileKind::trapezoid};
     if (auto i = reader.choice("profile", Need::optional, "profile", {"scurve", "trapezoid"})) {
         config.profile = profiles[*i];
@@ -346,6 +356,14 @@ MachineConfig read_document(const toml::table& document, ConfigSink& sink) {
         sink.error(root.region(), "config-missing-key", "missing table [machine]");
     }
     read_axes(root, config, sink);
+    const toml::table* machine_table = document["machine"].as_table();
+    const toml::node* system = machine_table != nullptr ? machine_table->get("gcode_system") : nullptr;
+    const bool lathe = config.find(Axis::X) != nullptr && config.find(Axis::Z) != nullptr &&
+                       config.find(Axis::Y) == nullptr;
+    if (system != nullptr && config.gcode_system != GCodeSystem::none && !lathe) {
+        // Fanuc's systems A, B and C are a lathe's (X and Z, no Y): a mill has one set of codes.
+        sink.error(system->source(), "config-value", "'gcode_system' is for lathes (X and Z axes, no Y)");
+    }
     if (const toml::table* spindle = root.table("spindle", Need::optional)) {
         read_spindle(*spindle, config, sink);
     }

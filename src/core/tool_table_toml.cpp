@@ -48,6 +48,7 @@ std::optional<ToolEntry> read_tool(const toml::table& table, ConfigSink& sink) {
     reader.number_into("nose_radius_mm", Need::optional, Sign::non_negative, tool.radius_mm);
     read_radius(reader, "radius_wear_mm", "diameter_wear_mm", tool.radius_wear_mm, Sign::any, sink);
     reader.number_into("x_offset_mm", Need::optional, Sign::any, tool.x_offset_mm);
+    reader.number_into("x_wear_mm", Need::optional, Sign::any, tool.x_wear_mm);
     if (auto orientation = reader.integer("orientation", Need::optional, Sign::non_negative)) {
         if (*orientation > 9) {
             sink.error(reader.region_of("orientation"), "config-value",

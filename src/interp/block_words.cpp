@@ -1,4 +1,5 @@
 #include "block_words.hpp"
+#include "lathe_codes.hpp"
 
 #include <cmath>
 
@@ -10,9 +11,7 @@ namespace {
 
 constexpr double largest_code_number = 99999999;
 
-std::string g_name(GCode code) {
-    return code % 10 == 0 ? fmt::format("G{}", code / 10) : fmt::format("G{}.{}", code / 10, code % 10);
-}
+std::string g_name(GCode code, GCodeSystem system) { return lathe_code_name(system, code); }
 
 
 //! M7 and M8 may run together (mist and flood); any other pair of one group conflicts.
@@ -62,7 +61,10 @@ std::optional<ModalGroup> group_of(GCode code) {
         case g(51): return ModalGroup::scaling;
         case g(50, 1): case g(51, 1): return ModalGroup::mirror;
         case g(68): case g(69): return ModalGroup::rotation;
-        default: return std::nullopt;
+        default:
+            if (is_lathe_single_cycle(code)) return ModalGroup::motion;          // modal, as G1
+            if (is_lathe_repetitive_cycle(code)) return ModalGroup::non_modal;   // one block
+            return std::nullopt;
     }
 }
 
@@ -80,8 +82,9 @@ bool is_code_number(double value) {
 }
 }  // namespace
 
-std::optional<Diagnostic> collect_words(const Block& block, BlockWords& out) {
+std::optional<Diagnostic> collect_words(const Block& block, BlockWords& out, GCodeSystem system) {
     out = BlockWords{};
+    out.lathe_increments = system == GCodeSystem::a;
     for (const Word& word : block.words) {
         auto at = [&] { return block.at_column(word.column); };
         bool code_letter = word.letter == 'M' || word.letter == 'N' || word.letter == 'O' || word.letter == 'T';
@@ -98,10 +101,13 @@ std::optional<Diagnostic> collect_words(const Block& block, BlockWords& out) {
             if (std::abs(tenths - code) > 1e-6) {
                 return error_at(at(), "unknown-gcode", fmt::format("G{} is not a G code", word.value));
             }
+            LatheCode read = read_lathe_code(system, code);
+            if (!read.refusal.empty()) return error_at(at(), "unsupported-gcode", read.refusal);
+            code = read.code;
             auto group = group_of(code);
             if (!group) {
                 return error_at(at(), "unsupported-gcode",
-                                fmt::format("{} is not supported", g_name(code)));
+                                fmt::format("{} is not supported", g_name(code, system)));
             }
             GWord& slot = out.gcodes[static_cast<std::size_t>(*group)];
             // G80 beside a motion code (`G0 G80 Z50`, as CAM posts write it) cancels the cycle
@@ -113,7 +119,7 @@ std::optional<Diagnostic> collect_words(const Block& block, BlockWords& out) {
             if (slot.code >= 0) {
                 return error_at(at(), "modal-conflict",
                                 fmt::format("{} and {} are in the same modal group",
-                                            g_name(slot.code), g_name(code)));
+                                            g_name(slot.code, system), g_name(code, system)));
             }
             slot = GWord{code, word.column};
         } else if (word.letter == 'M') {
@@ -131,12 +137,19 @@ std::optional<Diagnostic> collect_words(const Block& block, BlockWords& out) {
             }
             out.mcodes[out.mcode_count++] = MWord{code, word.column};
         } else {
-            const Word*& slot = out.letters[word.letter - 'A'];
+            const char reads_as = out.reads_as(word.letter);
+            const Word*& slot = out.letters[reads_as - 'A'];
             if (slot != nullptr) {
+                if (slot->letter != word.letter) {
+                    return error_at(at(), "duplicate-word",
+                                    fmt::format("{} and {} both give {} in one block", slot->letter, word.letter,
+                                                reads_as));
+                }
                 return error_at(at(), "duplicate-word",
                                 fmt::format("{} appears twice in one block", word.letter));
             }
             slot = &word;
+            out.incremental_letter[reads_as - 'A'] = reads_as != word.letter;
         }
     }
     return std::nullopt;

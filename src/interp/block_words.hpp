@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "nckit/core/diagnostic.hpp"
+#include "nckit/core/machine.hpp"
 #include "nckit/gcode/block.hpp"
 
 namespace nckit::interp {
@@ -59,7 +60,16 @@ struct BlockWords {
     [[nodiscard]] std::uint32_t group_column(ModalGroup g) const {
         return gcodes[static_cast<std::size_t>(g)].column;
     }
+    //! Lathe G-code system A: U and W are incremental X and Z, kept under X and Z with this flag.
+    std::array<bool, 26> incremental_letter{};
+
     [[nodiscard]] const Word* word(char letter) const { return letters[letter - 'A']; }
+    //! The axis letter a written letter stands for: X for U, Z for W under system A.
+    [[nodiscard]] char reads_as(char written) const {
+        if (!lathe_increments) return written;
+        return written == 'U' ? 'X' : written == 'W' ? 'Z' : written;
+    }
+    bool lathe_increments = false;
     [[nodiscard]] bool has(char letter) const { return word(letter) != nullptr; }
     [[nodiscard]] bool has_m(int code) const;
 };
@@ -75,6 +85,9 @@ struct BlockWords {
 [[nodiscard]] std::optional<ModalGroup> group_of(GCode code);
 
 //! Sorts the block's words; the error names the first offending word.
-[[nodiscard]] std::optional<Diagnostic> collect_words(const Block& block, BlockWords& out);
+//! Sorts the block's words; the error names the first offending word. Under a lathe G-code system
+//! the G codes are read through its table (lathe_codes.hpp) and, in system A, U W as X Z.
+[[nodiscard]] std::optional<Diagnostic> collect_words(const Block& block, BlockWords& out,
+                                                      GCodeSystem system = GCodeSystem::none);
 
 }  // namespace nckit::interp

@@ -1,4 +1,5 @@
 #include "executor.hpp"
+#include "lathe_codes.hpp"
 
 #include <cmath>
 
@@ -73,7 +74,7 @@ double Executor::offset_value(const Word& word) const {
 
 std::optional<Diagnostic> Executor::run(const Block& block, std::vector<Move>& out, bool& program_end) {
     block_ = &block;
-    if (auto e = collect_words(block, words_)) return e;
+    if (auto e = collect_words(block, words_, machine_.gcode_system)) return e;
     if (auto e = check_words()) return e;
     if (auto e = check_cutter_comp()) return e;
 
@@ -156,7 +157,10 @@ std::optional<Diagnostic> Executor::set_modes() {
 }
 
 std::optional<Diagnostic> Executor::set_feed_and_spindle(std::vector<Move>& out) {
-    if (const Word* f = words_.word('F'); f != nullptr && !(motion_ == g(32) || motion_ == g(33))) {
+    // F is the lead under G32/G33 and the threading cycles, not the feed rate.
+    const bool thread_lead = motion_ == g(32) || motion_ == g(33) || motion_ == lathe_threading_cycle ||
+                             words_.group(ModalGroup::non_modal) == lathe_thread_repeat;
+    if (const Word* f = words_.word('F'); f != nullptr && !thread_lead) {
         modal_.feed = f->value * modal_.length_factor_mm;
         modal_.feed_set = true;
     }
@@ -192,7 +196,10 @@ std::optional<Diagnostic> Executor::set_feed_and_spindle(std::vector<Move>& out)
         io.rpm_clamp = spindle.rpm_clamp;
         push(out, io);
     }
-    if (const Word* t = words_.word('T')) {
+    if (const Word* t = words_.word('T'); t != nullptr && machine_.gcode_system != GCodeSystem::none) {
+        if (auto e = select_lathe_tool(*t)) return e;
+        push(out, Io{IoKind::tool_select, modal_.tool.selected, 0});
+    } else if (t != nullptr) {
         modal_.tool.selected = static_cast<int>(t->value);
         push(out, Io{IoKind::tool_select, modal_.tool.selected, 0});
     }
@@ -267,7 +274,9 @@ std::optional<Diagnostic> Executor::set_coordinates() {
             if (const Word* w = words_.word(letter(axis.axis))) apply(axis.axis, axis_value(axis.axis, *w));
         }
     };
-    if (code == g(10) && words_.word('L')->value != 2 && words_.word('L')->value != 20) {
+    if (is_lathe_offset_write()) {
+        write_lathe_offset();
+    } else if (code == g(10) && words_.word('L')->value != 2 && words_.word('L')->value != 20) {
         write_tool_table();
     } else if (code == g(10)) {
         const Word* p = words_.word('P');

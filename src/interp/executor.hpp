@@ -1,6 +1,8 @@
 #pragma once
 // Runs one parsed block against the modal state and appends the moves it makes.
+#include <functional>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "block_words.hpp"
@@ -18,9 +20,22 @@ namespace nckit::interp {
 inline constexpr std::int64_t first_tool_variable = 2001;
 inline constexpr std::int64_t last_tool_variable = 2999;
 
+//! Reads the blocks N p through N q of the running program for the lathe cycles G70-G73, their
+//! expressions evaluated; the error names what was not found. Set by the program runner.
+using SequenceReader = std::function<std::optional<Diagnostic>(std::int64_t p, std::int64_t q, std::vector<Block>& out)>;
+
 class Executor {
 public:
     Executor(const MachineConfig& machine, const InterpreterOptions& options);
+
+    //! Sets the power-up modes (executor_startup.cpp): feed per revolution on a lathe G-code
+    //! system, then the machine's `startup_gcodes`. An error points into the machine file.
+    [[nodiscard]] std::optional<Diagnostic> start();
+
+    void set_sequence_reader(SequenceReader reader) { sequence_reader_ = std::move(reader); }
+    //! True once after a G71/G72/G73 block: the program goes on after its N q block, which the
+    //! cycle has used (the runner seeks there).
+    [[nodiscard]] bool take_skip_past_sequence() { return std::exchange(skip_past_sequence_, false); }
 
     //! Runs `block`: every check first, then its actions in RS-274 order. On an error nothing of
     //! the block has happened and `out` is unchanged. Sets `program_end` on M2/M30.
@@ -100,10 +115,36 @@ private:
     [[nodiscard]] std::optional<MacroValue> read_tool_variable(std::int64_t number) const;
     [[nodiscard]] std::optional<SystemVariables::WriteError> write_tool_variable(std::int64_t number, double value);
 
+    // A lathe's offsets (lathe_tool_offsets.cpp): T xxyy, G10 P, #2001-#2999 as a 0i-T.
+    std::optional<Diagnostic> select_lathe_tool(const Word& t);
+    [[nodiscard]] bool is_lathe_offset_write() const;
+    [[nodiscard]] std::optional<Diagnostic> check_lathe_offset_write() const;
+    void write_lathe_offset();
+    [[nodiscard]] std::optional<MacroValue> read_lathe_offset_variable(std::int64_t number) const;
+    [[nodiscard]] std::optional<SystemVariables::WriteError> write_lathe_offset_variable(std::int64_t number, double value);
+
     // Drilling cycles (executor_cycles.cpp).
     std::optional<Diagnostic> check_cycle_words() const;
     std::optional<Diagnostic> drill(std::vector<Move>& out);
     std::optional<Diagnostic> drill_hole(const struct HolePlan& hole, std::vector<Move>& out);
+
+    // Lathe cycles (lathe_cycle_words.cpp, lathe_single_cycles.cpp, lathe_repetitive_cycles.cpp).
+    [[nodiscard]] GCode lathe_cycle_of_block() const;  //!< the block's lathe cycle, or -1
+    [[nodiscard]] const Word* cycle_word(char written) const;  //!< the word as written (U, not X)
+    [[nodiscard]] std::optional<Diagnostic> check_lathe_cycle_words(GCode cycle) const;
+    std::optional<Diagnostic> lathe_single_cycle(std::vector<Move>& out);
+    std::optional<Diagnostic> lathe_repetitive_cycle(std::vector<Move>& out);
+    std::optional<Diagnostic> lathe_cycle_settings();  //!< the first blocks of G71/G72/G73
+    //! Runs the P-Q blocks from the current position on a copy of this executor: their moves.
+    std::optional<Diagnostic> run_sequence(std::int64_t p, std::int64_t q, std::size_t& approach_moves,
+                                           std::vector<Move>& moves);
+    std::optional<Diagnostic> finish_cycle(std::vector<Move>& out);
+    std::optional<Diagnostic> rough_cycle(std::vector<Move>& out);
+    std::optional<Diagnostic> pattern_cycle(std::vector<Move>& out);
+    std::optional<Diagnostic> thread_cycle(std::vector<Move>& out);   //!< G76 (lathe_thread_cycle.cpp)
+    std::optional<Diagnostic> groove_cycle(std::vector<Move>& out);   //!< G74/G75 (lathe_groove_cycles.cpp)
+    std::optional<Diagnostic> sync_to(const AxisVector& target, double lead_mm, std::vector<Move>& out);
+    std::optional<Diagnostic> feed_arc(Arc arc, std::vector<Move>& out);
 
     // System variable helpers (executor_system_variables.cpp).
     [[nodiscard]] std::optional<MacroValue> modal_code(int group) const;
@@ -130,6 +171,9 @@ private:
     CutterCompensator comp_;
     CompSide comp_side_ = CompSide::left;  //!< from check_cutter_comp() for this block's G41/G42
     double comp_radius_mm_ = 0;            //!< likewise, mm
+
+    SequenceReader sequence_reader_;
+    bool skip_past_sequence_ = false;
 
     double elapsed_s_ = 0;          //!< simulated time, s
     int last_mcode_ = 0;            //!< #4113

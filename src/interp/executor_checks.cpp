@@ -36,7 +36,7 @@ bool Executor::block_has_axis_words() const {
 }
 
 std::optional<Diagnostic> Executor::check_axis_letter(const Word& word) const {
-    Axis axis = *axis_from_letter(word.letter);
+    Axis axis = *axis_from_letter(words_.reads_as(word.letter));
     if (!configured_.contains(axis)) {
         return error(word.column, "unknown-axis", fmt::format("the machine has no {} axis", word.letter));
     }
@@ -53,6 +53,8 @@ std::optional<Diagnostic> Executor::check_words() {
         return p == g(17) ? Plane::xy : p == g(18) ? Plane::zx : Plane::yz;
     }();
 
+    if (GCode lathe_cycle = lathe_cycle_of_block(); lathe_cycle >= 0) return check_lathe_cycle_words(lathe_cycle);
+    if (is_lathe_offset_write()) return check_lathe_offset_write();
     const bool dwell = non_modal == g(4);
     const bool length_setting = words_.group(ModalGroup::length_comp) == g(43, 1);
     const bool homing = non_modal == g(28) || non_modal == g(30);
@@ -89,7 +91,7 @@ std::optional<Diagnostic> Executor::check_words() {
                                   words_.word('L')->value != 20;
 
     for (const Word& word : block_->words) {
-        char c = word.letter;
+        char c = words_.reads_as(word.letter);
         auto unused = [&](std::string why) { return error(word.column, "unused-word", std::move(why)); };
         if (c == 'G' || c == 'M' || c == 'F' || c == 'S' || c == 'T') continue;
         if (c == 'N' || c == 'O') {

@@ -19,7 +19,11 @@ Diagnostic to_diagnostic(const CompError& e) { return error_at(e.where, e.code, 
 
 bool Executor::block_starts_comp() const { return starts_comp(words_.group(ModalGroup::cutter_comp)); }
 
-std::optional<double> Executor::tool_radius_mm(int d_number) const { return tools_.radius_mm(d_number); }
+std::optional<double> Executor::tool_radius_mm(int d_number) const {
+    // A lathe's offset memory holds every offset number: one never set has no nose radius.
+    if (machine_.gcode_system != GCodeSystem::none && tools_.find(d_number) == nullptr) return 0.0;
+    return tools_.radius_mm(d_number);
+}
 
 std::optional<Diagnostic> Executor::check_cutter_comp() {
     const GCode code = words_.group(ModalGroup::cutter_comp);
@@ -79,6 +83,15 @@ std::optional<Diagnostic> Executor::check_cutter_comp() {
                                         : fmt::format("D{} has no entry in the tool table", number));
         }
         comp_radius_mm_ = *radius;
+        const ToolEntry* entry = tools_.find(number);
+        if (machine_.gcode_system != GCodeSystem::none && comp_radius_mm_ != 0 && entry != nullptr &&
+            entry->orientation != 0 && entry->orientation != 9) {
+            // The path of the nose centre is right; the shift from the centre to an imaginary
+            // tip (orientations 1-8) is not applied, so such a tool is refused, not cut wrongly.
+            return error(code_column, "unsupported-cycle",
+                         fmt::format("nose radius compensation for tip orientation {} is not supported "
+                                     "(0 or 9: the nose centre is programmed)", entry->orientation));
+        }
     }
     // A negative offset cuts on the other side, as on Fanuc and LinuxCNC controls.
     if (comp_radius_mm_ < 0) {

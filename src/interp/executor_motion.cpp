@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "executor.hpp"
+#include "lathe_codes.hpp"
 #include "nckit/interp/arc_geometry.hpp"
 
 namespace nckit::interp {
@@ -27,7 +28,7 @@ AxisVector Executor::target_from_words(bool machine_coordinates) const {
         double value = axis_value(axis.axis, *word);
         if (machine_coordinates) {
             target[axis.axis] = value;
-        } else if (modal_.incremental) {
+        } else if (modal_.incremental || words_.incremental_letter[letter(axis.axis) - 'A']) {
             target[axis.axis] = position_[axis.axis] + value;
         } else {
             target[axis.axis] = value + offset[axis.axis];
@@ -90,6 +91,12 @@ std::optional<Diagnostic> Executor::check_line_travel(const AxisVector& target) 
 std::optional<Diagnostic> Executor::move(std::vector<Move>& out) {
     GCode non_modal = words_.group(ModalGroup::non_modal);
     if (non_modal == g(28) || non_modal == g(30)) return home(out);
+    if (!is_lathe_single_cycle(motion_)) modal_.lathe.single = LatheSingleCycle{};
+    if (is_lathe_repetitive_cycle(non_modal)) return lathe_repetitive_cycle(out);
+    if (is_lathe_single_cycle(motion_)) {
+        if (!block_has_axis_words()) return std::nullopt;
+        return lathe_single_cycle(out);
+    }
     // G92.1 takes no axis words: check_words() gave any to the motion mode, so they move.
     if (non_modal == g(4) || non_modal == g(10) || non_modal == g(52) || non_modal == g(92) ||
         non_modal == g(50) || motion_ == g(80) || words_.group(ModalGroup::length_comp) == g(43, 1)) {

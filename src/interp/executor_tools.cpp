@@ -52,7 +52,7 @@ std::optional<Diagnostic> Executor::set_tool_length() {
     if (auto e = number_word('H', h)) return e;
     // G41.1/G42.1 D is a diameter, not an offset number.
     if (const Word* d = words_.word('D');
-        d != nullptr && words_.group(ModalGroup::spindle_mode) != g(96) &&
+        d != nullptr && words_.group(ModalGroup::spindle_mode) != g(96) && lathe_cycle_of_block() < 0 &&
         words_.group(ModalGroup::cutter_comp) != g(41, 1) && words_.group(ModalGroup::cutter_comp) != g(42, 1)) {
         int number = 0;
         if (auto e = number_word('D', number)) return e;
@@ -171,6 +171,7 @@ void Executor::write_tool_table() {
 }
 
 std::optional<MacroValue> Executor::read_tool_variable(std::int64_t n) const {
+    if (machine_.gcode_system != GCodeSystem::none) return read_lathe_offset_variable(n);
     if (n < tool_variables_first || n > tool_variables_last) return std::nullopt;
     const std::int64_t page = (n - tool_variables_first) / tool_variables_per_page;
     if (page > 3) return std::nullopt;
@@ -182,6 +183,7 @@ std::optional<MacroValue> Executor::read_tool_variable(std::int64_t n) const {
 }
 
 std::optional<SystemVariables::WriteError> Executor::write_tool_variable(std::int64_t n, double value) {
+    if (machine_.gcode_system != GCodeSystem::none) return write_lathe_offset_variable(n, value);
     const std::int64_t page = (n - tool_variables_first) / tool_variables_per_page;
     if (page > 3) {
         return SystemVariables::WriteError{alarm::illegal_variable,

@@ -3,6 +3,7 @@
 #include <array>
 
 #include "block_words.hpp"
+#include "lathe_state.hpp"
 #include "nckit/core/axes.hpp"
 #include "nckit/interp/move.hpp"
 
@@ -55,6 +56,7 @@ struct ModalState {
     AxisVector tool_offset;         //!< G43/G44/G43.1 length offset in machine coordinates, mm
     bool arc_centers_absolute = false;  //!< G90.1: I J K are absolute centre coordinates
     int cutter_comp = 0;            //!< 0 = G40, 41 = G41 / G41.1, 42 = G42 / G42.1
+    LatheState lathe;               //!< lathe cycles' modal words (lathe_state.hpp)
 };
 
 //! Every offset between machine and program coordinates, all in mm / deg.

@@ -52,7 +52,11 @@ ProgramRunner::ProgramRunner(const MachineConfig& machine, ProgramSource main, c
     Frame main_frame;
     main_frame.program = location;
     frames_.push_back(std::move(main_frame));
-    if (!options_.retained_file.empty()) {
+    executor_.set_sequence_reader([this](std::int64_t p, std::int64_t q, std::vector<Block>& out) {
+        return read_sequence(p, q, out);
+    });
+    if (auto error = executor_.start()) startup_error_ = std::move(*error);
+    if (!startup_error_ && !options_.retained_file.empty()) {
         auto retained = load_retained(options_.retained_file);
         if (retained) {
             variables_.set_retained(*retained);

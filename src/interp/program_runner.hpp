@@ -76,6 +76,13 @@ private:
     //! end_of_main(), and on a clean end the moves cutter compensation still holds go out first.
     [[nodiscard]] InterpResult finish_main(std::vector<Move>& pending);
 
+    // runner_sequences.cpp: the P-Q blocks of a lathe cycle.
+    std::optional<Diagnostic> read_sequence(std::int64_t p, std::int64_t q, std::vector<Block>& out);
+    struct SequenceEnd {
+        std::uint64_t offset = 0;
+        std::uint32_t line = 0;
+    } sequence_end_;
+
     // runner_calls.cpp: G65, G66/G67, M98, M99.
     std::optional<InterpResult> run_nc_block(const Block& block, std::vector<Move>& pending);
     std::optional<Diagnostic> call(const Block& block, std::uint32_t column, std::int64_t program, int repeats,

@@ -232,6 +232,10 @@ std::optional<InterpResult> ProgramRunner::run_nc_block(const Block& block, std:
     if (!scan_.words.empty()) {
         if (auto error = executor_.run(scan_, pending, program_end)) return InterpResult(std::move(*error));
         moves_made_ += pending.size() - before;
+        // G71/G72/G73 used the blocks up to N q: the program goes on after them.
+        if (executor_.take_skip_past_sequence() && sequence_end_.offset > source().next_offset()) {
+            source().seek(sequence_end_.offset, sequence_end_.line);
+        }
     }
     if (program_end) return InterpResult(ProgramEnd{});
     if (m98 != nullptr) {

@@ -1,4 +1,4 @@
-( nckit-machine: lathe.toml )
+( nckit-machine: lathe_b.toml )
 %
 O0014 (LATHE: STEPPED SHAFT WITH A BALL END AND AN M24 X 2 THREAD, X IN DIAMETERS)
 ( Roughing: WHILE passes of 2.5 mm on the diameter, largest step first, allowance kept.    )

@@ -1,4 +1,4 @@
-( nckit-machine: lathe.toml )
+( nckit-machine: lathe_b.toml )
 %
 O0016 (LATHE, INCH: 1/2-13 UNC THREAD AND A FINISH FEED FROM THE SURFACE FINISH WANTED)
 ( G20: X diameters and Z in inches. The finishing feed per revolution comes from the peak-to- )

@@ -9,6 +9,7 @@
 
 #include "nckit/core/axes.hpp"
 #include "nckit/core/result.hpp"
+#include "nckit/core/source_location.hpp"
 #include "nckit/core/tool_table.hpp"
 
 namespace nckit {
@@ -82,6 +83,10 @@ enum class CompStartup {
     type_a   //!< r perpendicular to the next block's start: no path around the corner
 };
 
+//! A Fanuc lathe's G-code system (docs/gcode-lathe.md has the table). `none`: the mill codes
+//! (and LinuxCNC's lathe codes), as for every machine without the key.
+enum class GCodeSystem { none, a, b, c };
+
 struct MachineConfig {
     std::string name;
     double servo_period_s = 0.001;  //!< s, trajectory sampling period
@@ -95,6 +100,11 @@ struct MachineConfig {
     DecimalPointInput decimal_point_input = DecimalPointInput::calculator;
     ProfileKind profile = ProfileKind::scurve;
     CompStartup cutter_comp_startup = CompStartup::type_b;  //!< `cutter_comp_startup = "type_a"`
+    GCodeSystem gcode_system = GCodeSystem::none;  //!< `gcode_system = "A"` (lathes only)
+    //! G codes in force at power-up (`startup_gcodes = "G18 G21 G40 G97 G99"`), read in the
+    //! machine's G-code system before the program's first block; empty: none beyond the defaults.
+    std::string startup_gcodes;
+    SourceLocation startup_gcodes_at;  //!< where the key's value stands, for its errors
     std::vector<AxisConfig> axes;   //!< in the order the config lists them
     SpindleConfig spindle;
     //! The tool table (`tools = "FILE"` in [machine], or `--tools FILE`); empty when none given.

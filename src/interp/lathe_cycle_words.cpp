@@ -1,0 +1,92 @@
+// The words a lathe cycle block may hold. A cycle's letters mean their own things (G71 U is a
+// depth of cut, not a move), so these blocks are checked here instead of by check_words.
+#include <cmath>
+#include <string_view>
+
+#include <fmt/format.h>
+
+#include "executor.hpp"
+#include "lathe_codes.hpp"
+
+namespace nckit::interp {
+
+namespace {
+
+//! Letters each cycle reads besides G M F S T N O.
+std::string_view cycle_letters(GCode code) {
+    if (code == lathe_turning_cycle || code == lathe_facing_cycle) return "XZUWR";
+    if (code == lathe_threading_cycle) return "XZUWRQ";
+    if (code == lathe_finish) return "PQ";
+    if (code == lathe_rough_turning || code == lathe_rough_facing || code == lathe_pattern_repeat) {
+        return "PQUWRD";
+    }
+    if (code == lathe_face_grooving || code == lathe_od_grooving) return "XZUWPQR";
+    if (code == lathe_thread_repeat) return "XZUWPQRIKDA";
+    return "";
+}
+
+}  // namespace
+
+GCode Executor::lathe_cycle_of_block() const {
+    const GCode non_modal = words_.group(ModalGroup::non_modal);
+    if (is_lathe_repetitive_cycle(non_modal)) return non_modal;
+    if (is_lathe_single_cycle(motion_)) return motion_;
+    return -1;
+}
+
+const Word* Executor::cycle_word(char written) const {
+    const Word* word = words_.word(words_.reads_as(written));
+    return word != nullptr && word->letter == written ? word : nullptr;
+}
+
+std::optional<Diagnostic> Executor::check_lathe_cycle_words(GCode cycle) const {
+    const std::string name = lathe_code_name(machine_.gcode_system, cycle);
+    const std::string_view allowed = cycle_letters(cycle);
+    for (const Word& word : block_->words) {
+        const char c = word.letter;
+        if (c == 'G' || c == 'M' || c == 'F' || c == 'S' || c == 'T') continue;
+        if (c == 'N' || c == 'O') {
+            if (&word != &block_->words.front()) {
+                return error(word.column, "syntax", fmt::format("{} word must start the block", c));
+            }
+            continue;
+        }
+        if (allowed.find(c) == std::string_view::npos) {
+            return error(word.column, "unused-word", fmt::format("{} takes no {} word", name, c));
+        }
+        if (c == 'X' || c == 'Z' || ((c == 'U' || c == 'W') && words_.lathe_increments)) {
+            if (is_lathe_single_cycle(cycle) || cycle == lathe_face_grooving || cycle == lathe_od_grooving ||
+                cycle == lathe_thread_repeat) {
+                if (auto e = check_axis_letter(word)) return e;
+            }
+        }
+    }
+    if (const Word* f = words_.word('F'); f != nullptr && f->value <= 0) {
+        return error(f->column, "bad-value", fmt::format("{} needs a positive F", name));
+    }
+    if (is_lathe_single_cycle(cycle)) {
+        const bool fresh = modal_.lathe.single.mode != cycle;
+        const bool has_x = words_.has('X');
+        const bool has_z = words_.has('Z');
+        if (fresh && (!has_x || !has_z) && (has_x || has_z)) {
+            return error(motion_column(), "missing-word",
+                         fmt::format("{} needs both X (U) and Z (W) in its first block", name));
+        }
+        const bool threading = cycle == lathe_threading_cycle;
+        if (fresh && (has_x || has_z)) {
+            const bool feed = threading ? words_.has('F') : (words_.has('F') || modal_.feed_set);
+            if (!feed) {
+                return error(motion_column(), threading ? "missing-word" : "no-feed",
+                             threading ? fmt::format("{} needs the thread lead F", name)
+                                       : "cutting move with no feed rate (F)");
+            }
+        }
+        if (const Word* q = words_.word('Q'); q != nullptr && q->value != 0) {
+            return error(q->column, "unsupported-word",
+                         fmt::format("{} Q (start angle of a multi-start thread) is not supported", name));
+        }
+    }
+    return std::nullopt;
+}
+
+}  // namespace nckit::interp

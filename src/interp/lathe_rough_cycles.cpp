@@ -1,0 +1,180 @@
+// Stock removal G71 (turning: levels of X, cuts along Z) and G72 (facing: levels of Z, cuts along
+// X), type I: the finishing shape N p .. N q runs one way in both axes. With A the start point,
+// A' where the P block goes and the shape moved by the finishing allowance (U/2 in X as a
+// radius, W in Z), each pass goes in from A by the depth of cut (G71 U / G72 W), cuts along the
+// length axis until it meets the moved shape, escapes at 45 degrees by R and returns at rapid.
+// When the next level would pass A' (moved), a last pass follows the moved shape from A' to its
+// end, which leaves exactly the allowance for G70; the tool then returns to A at rapid. Rapids
+// at the end of the shape (a retract in the Q block) are not part of what is roughed.
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "executor.hpp"
+#include "lathe_codes.hpp"
+#include "lathe_contour.hpp"
+
+namespace nckit::interp {
+
+namespace {
+constexpr double flat_mm = 1e-9;       // rounding between the shape's own end points
+constexpr int max_rough_passes = 100000;
+
+double sign_of(double value) { return value > 0 ? 1.0 : value < 0 ? -1.0 : 0.0; }
+}  // namespace
+
+std::optional<Diagnostic> Executor::rough_cycle(std::vector<Move>& out) {
+    const GCode cycle = words_.group(ModalGroup::non_modal);
+    const std::string name = lathe_code_name(machine_.gcode_system, cycle);
+    const bool facing = cycle == lathe_rough_facing;
+    const ContourAxes axes = facing ? ContourAxes{Axis::Z, Axis::X} : ContourAxes{Axis::X, Axis::Z};
+    const char depth_letter = facing ? 'W' : 'U';
+    const LatheCycleSettings& settings = modal_.lathe.settings;
+    double depth_mm = settings.rough_depth_mm;
+    if (const Word* d = words_.word('D')) depth_mm = offset_value(*d);  // the one-block form's D
+    if (depth_mm <= 0) {
+        return error(words_.group_column(ModalGroup::non_modal), "missing-word",
+                     fmt::format("{} needs its depth of cut first: a block {} {}.. R..", name, name, depth_letter));
+    }
+    AxisVector allowance;
+    const Word* u = cycle_word('U');
+    const Word* w = cycle_word('W');
+    if (u != nullptr) allowance[Axis::X] = axis_value(Axis::X, *u);
+    if (w != nullptr) allowance[Axis::Z] = axis_value(Axis::Z, *w);
+
+    const AxisVector start = position_;
+    std::size_t approach = 0;
+    std::vector<Move> shape;
+    if (auto e = run_sequence(static_cast<std::int64_t>(words_.word('P')->value),
+                              static_cast<std::int64_t>(words_.word('Q')->value), approach, shape)) {
+        return e;
+    }
+    if (approach != 1 || !std::holds_alternative<Line>(shape[0].what)) {
+        return error(column_of('P'), "bad-cycle", fmt::format("{}: the P block must make one G0 or G1 move", name));
+    }
+    const Line& in = std::get<Line>(shape[0].what);
+    if (std::abs(in.to[axes.length] - in.from[axes.length]) > flat_mm) {
+        // Type II (pockets) starts with a move in both axes; nckit cuts type I only.
+        return error_at(shape[0].where, "unsupported-cycle",
+                        fmt::format("{} type II (the P block moves in {} too) is not supported",
+                                    name, letter(axes.length)));
+    }
+    std::vector<Move> profile;
+    for (std::size_t i = 1; i < shape.size(); ++i) {
+        if (std::holds_alternative<SyncMove>(shape[i].what)) {
+            return error_at(shape[i].where, "bad-cycle", fmt::format("{}: no threading in the finishing shape", name));
+        }
+        if (std::holds_alternative<Line>(shape[i].what) || std::holds_alternative<Arc>(shape[i].what)) {
+            profile.push_back(shape[i]);
+        }
+    }
+    // Rapids that close the shape (the Q block's retract, often with G40) cut nothing: the shape
+    // to rough ends with its last feed move.
+    while (!profile.empty() && std::holds_alternative<Line>(profile.back().what) &&
+           std::get<Line>(profile.back().what).rapid) {
+        profile.pop_back();
+    }
+    if (profile.empty()) {
+        return error(column_of('Q'), "bad-cycle", fmt::format("{}: no finishing shape between P and Q", name));
+    }
+    const double a_d = start[axes.depth];
+    const double a_l = start[axes.length];
+    const double up = sign_of(a_d - in.to[axes.depth]);  // from the shape towards A
+    if (up == 0) {
+        return error(column_of('P'), "bad-cycle",
+                     fmt::format("{}: the P block must move in {} from the start point", name, letter(axes.depth)));
+    }
+    const Word* depth_allowance = facing ? w : u;
+    if (depth_allowance != nullptr && allowance[axes.depth] * up < 0) {
+        // The allowance would move the shape into the part: Fanuc leaves it on the side the tool comes from.
+        return error(depth_allowance->column, "bad-cycle",
+                     fmt::format("finishing allowance {} has the wrong sign: the shape is cut from {}{}",
+                                 depth_allowance->letter, up > 0 ? "+" : "-", letter(axes.depth)));
+    }
+    // Type I: the shape runs one way in both axes (Fanuc alarm PS0064 otherwise).
+    double along = 0;
+    for (const Move& element : profile) {
+        const AxisVector from = *move_start(element);
+        const AxisVector to = *move_end(element);
+        const Extent d = extent_along(element, axes.depth);
+        const Extent l = extent_along(element, axes.length);
+        const double step_l = to[axes.length] - from[axes.length];
+        if (along == 0 && std::abs(step_l) > flat_mm) along = sign_of(step_l);
+        const bool d_ok = up * (to[axes.depth] - from[axes.depth]) >= -flat_mm &&
+                          d.low >= std::min(from[axes.depth], to[axes.depth]) - flat_mm &&
+                          d.high <= std::max(from[axes.depth], to[axes.depth]) + flat_mm;
+        const bool l_ok = along * step_l >= -flat_mm &&
+                          l.low >= std::min(from[axes.length], to[axes.length]) - flat_mm &&
+                          l.high <= std::max(from[axes.length], to[axes.length]) + flat_mm;
+        if (!d_ok || !l_ok) {
+            return error_at(element.where, "bad-cycle",
+                            fmt::format("{} type I: the finishing shape must run one way in {} and in {} "
+                                        "(this block turns back in {})",
+                                        name, letter(axes.depth), letter(axes.length),
+                                        letter(d_ok ? axes.length : axes.depth)));
+        }
+    }
+    if (along == 0) {
+        return error(column_of('Q'), "bad-cycle", fmt::format("{}: the finishing shape has no length in {}", name,
+                                                              letter(axes.length)));
+    }
+    std::vector<Move> moved;
+    for (const Move& element : profile) moved.push_back(shifted(element, allowance));
+    const double floor_d = in.to[axes.depth] + allowance[axes.depth];
+    const double end_l = (*move_end(moved.back()))[axes.length];
+    const double level_count = std::floor((a_d - floor_d) * up / depth_mm - flat_mm);
+    if ((a_d - floor_d) * up <= flat_mm) {
+        const std::uint32_t column = depth_allowance != nullptr ? depth_allowance->column
+                                                                : words_.group_column(ModalGroup::non_modal);
+        return error(column, "bad-cycle",
+                     fmt::format("{}: the start point lies inside the finishing allowance", name));
+    }
+    if (level_count > max_rough_passes) {
+        return error(words_.group_column(ModalGroup::non_modal), "bad-value",
+                     fmt::format("{}: the depth of cut needs more than {} passes", name, max_rough_passes));
+    }
+    const int levels = static_cast<int>(level_count);
+    const GCode infeed = in.rapid ? g(0) : g(1);
+    auto point = [&](double d, double l) {
+        AxisVector p = position_;
+        p[axes.depth] = d;
+        p[axes.length] = l;
+        return p;
+    };
+    const double escape = settings.retract_mm;
+    for (int k = 1; k <= levels; ++k) {
+        const double level = a_d - up * k * depth_mm;
+        double cut_end = end_l;
+        for (const Move& element : moved) {
+            if (auto l = level_crossing(element, axes, level)) {
+                cut_end = *l;
+                break;
+            }
+        }
+        if (along * (cut_end - a_l) <= flat_mm) continue;  // nothing to cut at this level
+        if (auto e = straight(infeed, point(level, a_l), out)) return e;
+        if (auto e = straight(g(1), point(level, cut_end), out)) return e;
+        if (escape > 0) {
+            if (auto e = straight(g(1), point(level + up * escape, cut_end - along * escape), out)) return e;
+        }
+        if (auto e = straight(g(0), point(position_[axes.depth], a_l), out)) return e;
+    }
+    // The last pass: along the shape moved by the allowance.
+    if (auto e = straight(infeed, point(floor_d, a_l + allowance[axes.length]), out)) return e;
+    for (const Move& element : moved) {
+        if (const auto* line = std::get_if<Line>(&element.what)) {
+            if (auto e = straight(line->rapid ? g(0) : g(1), line->to, out)) return e;
+        } else if (auto e = feed_arc(std::get<Arc>(element.what), out)) {
+            return e;
+        }
+    }
+    const double clear_d = up > 0 ? std::max(a_d, position_[axes.depth]) : std::min(a_d, position_[axes.depth]);
+    for (const AxisVector& back : {point(clear_d, position_[axes.length]), point(clear_d, a_l), start}) {
+        if (back == position_) continue;
+        if (auto e = straight(g(0), back, out)) return e;
+    }
+    skip_past_sequence_ = true;
+    return std::nullopt;
+}
+
+}  // namespace nckit::interp

@@ -1,0 +1,56 @@
+#!/usr/bin/env python3
+"""The example lathe as a user runs it: a Fanuc program without G98/G99 feeds per revolution
+and `nckit plan` times it from the spindle speed; a code of another G-code system, a bad
+cycle and a bad offset write stop with FILE:LINE:COL: error: and exit status 2."""
+import json
+import pathlib
+import sys
+import tempfile
+
+from cli_checks import check, run_nckit, summary
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+LATHE = ROOT / "examples" / "machines" / "lathe.toml"
+
+
+def main() -> int:
+    nckit = sys.argv[1]
+    with tempfile.TemporaryDirectory() as tmp:
+        program = pathlib.Path(tmp) / "per_rev.nc"
+        # 500 rpm, F0.2: per revolution 100 mm/min, so the 50 mm cut alone takes 30 s. Read as
+        # per minute (G94 at power-up) it would take 250 minutes.
+        program.write_text("O1000\nG97 S500 M03\nG00 X40. Z2.\nG01 Z-48. F0.2\nG00 X60.\nM30\n")
+        run = run_nckit(nckit, "plan", program, "--machine", LATHE, "--json", text=True)
+        check(run.returncode == 0, f"the program plans ({run.stderr.strip()})")
+        if run.returncode == 0:
+            report = json.loads(run.stdout)
+            cycle = report["cycle_time_s"]
+            check(30.0 <= cycle <= 32.0, f"cycle time {cycle:.3f} s is the 30 s cut plus its rapids")
+        # The same program with G98: F0.2 mm/min would be 250 min; nckit plans it as written.
+        per_min = pathlib.Path(tmp) / "per_min.nc"
+        per_min.write_text("G98 G97 S500 M03\nG00 X40. Z2.\nG01 Z-48. F100.\nM30\n")
+        run = run_nckit(nckit, "plan", per_min, "--machine", LATHE, "--json", text=True)
+        check(run.returncode == 0, "G98 plans")
+        if run.returncode == 0:
+            cycle = json.loads(run.stdout)["cycle_time_s"]
+            check(30.0 <= cycle <= 31.0, f"G98 F100: 50 mm at 100 mm/min ({cycle:.3f} s)")
+
+        cases = {
+            "g91.nc": ("G0 X10.\nG91 U1.\nM30\n", "g91.nc:2:1: error:"),
+            "g95.nc": ("G95 F0.2\nM30\n", "g95.nc:1:1: error:"),
+            "cycle.nc": ("G0 X60. Z2.\nG71 U2. R0.5\nG71 P10 Q20 U-0.4 F0.2\nN10 G0 X30.\nN20 G1 Z-10.\nM30\n",
+                         "cycle.nc:3:13: error:"),
+            "offset.nc": ("G10 P200 X1.\nM30\n", "offset.nc:1:5: error:"),
+            "g90.nc": ("G0 X60. Z2.\nG90 X50. F0.2\nM30\n", "g90.nc:2:1: error:"),
+        }
+        for name, (text, where) in cases.items():
+            path = pathlib.Path(tmp) / name
+            path.write_text(text)
+            run = run_nckit(nckit, "moves", path, "--machine", LATHE, text=True)
+            check(run.returncode == 2 and where in run.stderr, f"{name}: {where} exit 2 ({run.stderr.strip()})")
+            check(run.stdout == "", f"{name}: nothing moves")
+    return summary()
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,99 @@
+// A lathe's tool offsets as a 0i-T: T0101, T0100, G10 P, #2001-#2999; G50 S under G96.
+#include <gtest/gtest.h>
+
+#include "interp_support.hpp"
+#include "lathe_test_machine.hpp"
+
+namespace nckit::test {
+namespace {
+
+MachineConfig lathe_with_offset() {
+    MachineConfig m = system_a_lathe();
+    ToolEntry e;
+    e.number = 1;
+    e.x_offset_mm = 1.0;   // radius
+    e.x_wear_mm = 0.1;
+    e.length_mm = 5.0;
+    e.length_wear_mm = -0.2;
+    e.radius_mm = 0.4;
+    e.orientation = 3;
+    m.tools.insert(e);
+    return m;
+}
+
+const Line& last_line(const std::vector<Move>& moves) {
+    for (auto it = moves.rbegin(); it != moves.rend(); ++it) {
+        if (const auto* l = std::get_if<Line>(&it->what)) return *l;
+    }
+    static Line none;
+    ADD_FAILURE() << "no line";
+    return none;
+}
+
+TEST(LatheOffsets, T0101AppliesGeometryAndWearT0100Cancels) {
+    const MachineConfig m = lathe_with_offset();
+    // Offset 1: X 1.0 + 0.1 (radius), Z 5.0 - 0.2. X20 is radius 10: the slide goes to 11.1.
+    auto with = moves_of("T0101\nG0 X20. Z0\nM30\n", m);
+    EXPECT_DOUBLE_EQ(last_line(with).to[Axis::X], 11.1);
+    EXPECT_DOUBLE_EQ(last_line(with).to[Axis::Z], 4.8);
+    const auto& tool = std::get<Io>(with.at(0).what);
+    EXPECT_EQ(tool.kind, IoKind::tool_select);
+    EXPECT_EQ(tool.number, 1);  // T0101 is tool 1
+    auto cancelled = moves_of("T0101\nG0 X20. Z0\nT0100\nG0 X20. Z0\nM30\n", m);
+    EXPECT_DOUBLE_EQ(last_line(cancelled).to[Axis::X], 10.0);
+    EXPECT_DOUBLE_EQ(last_line(cancelled).to[Axis::Z], 0.0);
+    // T101 reads as T0101; an offset the table has not is zero, as a cleared offset memory.
+    EXPECT_DOUBLE_EQ(last_line(moves_of("T101\nG0 X20. Z0\nM30\n", m)).to[Axis::X], 11.1);
+    EXPECT_DOUBLE_EQ(last_line(moves_of("T0202\nG0 X20. Z0\nM30\n", m)).to[Axis::X], 10.0);
+}
+
+TEST(LatheOffsets, MacroVariablesReadAsA0iT) {
+    const MachineConfig m = lathe_with_offset();
+    // X values read as diameters on a diameter lathe: wear 0.1 radius is #2001 = 0.2.
+    auto read = [&](const char* variable) {
+        auto moves = moves_of(std::string("#100 = ") + variable + "\nG0 Z[#100]\nM30\n", m);
+        return last_line(moves).to[Axis::Z];
+    };
+    EXPECT_DOUBLE_EQ(read("#2001"), 0.2);
+    EXPECT_DOUBLE_EQ(read("#2101"), -0.2);
+    EXPECT_DOUBLE_EQ(read("#2301"), 3.0);
+    EXPECT_DOUBLE_EQ(read("#2701"), 2.0);
+    EXPECT_DOUBLE_EQ(read("#2801"), 5.0);
+    EXPECT_DOUBLE_EQ(read("#2901"), 0.4);
+    EXPECT_DOUBLE_EQ(read("#2005"), 0.0);
+    // Writing: #2801 = 7 moves the next T0101's Z.
+    auto moves = moves_of("#2801 = 7.\n#2101 = 0\nT0101\nG0 X20. Z0\nM30\n", m);
+    EXPECT_DOUBLE_EQ(last_line(moves).to[Axis::Z], 7.0);
+    EXPECT_EQ(error_of("#2401 = 1\n", m).alarm, 115);
+}
+
+TEST(LatheOffsets, G10PWritesWearAndGeometry) {
+    const MachineConfig m = lathe_with_offset();
+    // G10 P1 U0.2: wear X +0.2 on the diameter (0.1 radius) -> 0.2 radius; P10001 X4.: geometry 2.
+    auto moves = moves_of("G10 P1 U0.2\nG10 P10001 X4. W1. R0.8 Q2\n#100 = #2901\n#101 = #2301\nT0101\nG0 X20. Z0\n"
+                          "G0 Z[#100 + #101]\nM30\n", m);
+    ASSERT_GE(moves.size(), 3u);
+    const Line& at = std::get<Line>(moves.at(moves.size() - 2).what);
+    EXPECT_DOUBLE_EQ(at.to[Axis::X], 10.0 + 2.0 + 0.2);
+    EXPECT_DOUBLE_EQ(at.to[Axis::Z], 6.0 - 0.2);
+    EXPECT_DOUBLE_EQ(last_line(moves).to[Axis::Z], 0.8 + 2.0 + 5.8);
+}
+
+TEST(LatheOffsets, MalformedOffsetCodes) {
+    const MachineConfig m = lathe_with_offset();
+    EXPECT_EQ(error_where("G10 P200 X1.\n", m), "bad-g10 1:5");
+    EXPECT_EQ(error_where("G10 X1.\n", m), "bad-g10 1:1");
+    EXPECT_EQ(error_where("G10 P1 K1.\n", m), "unused-word 1:8");
+    EXPECT_EQ(error_where("G10 P1 Q12\n", m), "bad-value 1:8");
+    EXPECT_EQ(error_where("#2301 = 11\n", m), "macro-alarm 1:1");
+}
+
+TEST(LatheOffsets, G50ClampsTheSpindleUnderG96) {
+    auto moves = moves_of("G50 S1500\nG96 S200 M3\nG0 X10. Z0\nG1 Z-10. F0.1\nM30\n", system_a_lathe());
+    const Line& cut = last_line(moves);
+    // 200 m/min at 10 mm diameter would be 6366 rpm: clamped to 1500, so 0.1 mm/rev = 150 mm/min.
+    EXPECT_DOUBLE_EQ(cut.feed.mm_per_min, 150.0);
+}
+
+}  // namespace
+}  // namespace nckit::test

@@ -1,0 +1,110 @@
+#!/usr/bin/env python3
+"""Runs every real lathe program beside this file through `nckit moves --json` on the example
+lathe (Fanuc G-code system A) and reports how many nckit accepts. For each accepted program the
+moves are checked: every cutting move has a positive feed, and every roughing feed of a G71
+ends on or outside the finished shape that its G70 cuts (the cycle never cuts into the
+finishing allowance). Exit status 1 when fewer than --min-accepted programs pass or a check
+fails. `--list` prints each program's status (the table in BENCHMARKS.md)."""
+import argparse
+import json
+import pathlib
+import re
+import subprocess
+import sys
+
+HERE = pathlib.Path(__file__).resolve().parent
+ROOT = HERE.parents[1]
+CYCLE_RE = re.compile(r"G0?71\s*P0*(\d+)\s*Q0*(\d+)", re.I)
+SEQ_RE = re.compile(r"^\s*N0*(\d+)", re.I)
+
+
+def shape_lines(text: str, p: str, q: str):
+    first = last = None
+    for number, line in enumerate(text.splitlines(), 1):
+        m = SEQ_RE.match(line)
+        if m and m.group(1) == p and first is None:
+            first = number
+        if m and m.group(1) == q and first is not None:
+            last = number
+            break
+    return first, last
+
+
+def profile_x_at(segments, z):
+    """X (radius) of the finished shape at z, from its feed lines; None where it does not reach."""
+    best = None
+    for (z0, x0), (z1, x1) in segments:
+        lo, hi = min(z0, z1), max(z0, z1)
+        if z < lo - 1e-9 or z > hi + 1e-9:
+            continue
+        x = max(x0, x1) if abs(z1 - z0) < 1e-12 else x0 + (z - z0) / (z1 - z0) * (x1 - x0)
+        best = x if best is None else min(best, x)  # on a face: its low end bounds the part
+    return best
+
+
+def check_program(path: pathlib.Path, moves: list) -> list:
+    problems = []
+    for m in moves:
+        if m["kind"] in ("linear", "arc", "sync"):
+            feed = m.get("feed", {})
+            if not any(isinstance(v, (int, float)) and v > 0 for v in feed.values()):
+                problems.append(f"line {m['line']}: cutting move without a feed")
+    text = path.read_text(errors="replace")
+    for number, line in enumerate(text.splitlines(), 1):
+        cycle = CYCLE_RE.search(line.split("(")[0])
+        if not cycle:
+            continue
+        first, last = shape_lines(text, cycle.group(1), cycle.group(2))
+        if first is None or last is None:
+            continue
+        shape = [((m["start"]["Z"], m["start"]["X"]), (m["end"]["Z"], m["end"]["X"]))
+                 for m in moves if first <= m["line"] <= last and m["kind"] == "linear"]
+        rough = [m for m in moves if m["line"] == number and m["kind"] == "linear"]
+        if not shape or not rough:
+            continue
+        start_x = rough[0]["start"]["X"]
+        if start_x < max(max(a[1], b[1]) for a, b in shape) - 1e-9:
+            continue  # an inside shape or a start below it: the check is for outside turning
+        for m in rough:
+            z, x = m["end"]["Z"], m["end"]["X"]
+            limit = profile_x_at(shape, z)
+            if limit is not None and x < limit - 1e-6:
+                problems.append(f"line {number}: roughing reaches X{x:.4f} at Z{z:.4f}, inside the shape (X{limit:.4f})")
+    return problems
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser()
+    parser.add_argument("nckit")
+    parser.add_argument("--min-accepted", type=int, default=0)
+    parser.add_argument("--list", action="store_true")
+    args = parser.parse_args()
+    machine = ROOT / "examples" / "machines" / "lathe.toml"
+    programs = sorted(HERE.glob("*.nc"))
+    accepted = 0
+    failures = []
+    for program in programs:
+        run = subprocess.run([args.nckit, "moves", str(program), "--machine", str(machine), "--json"],
+                             capture_output=True, text=True, timeout=120)
+        if run.returncode != 0:
+            first = run.stderr.strip().splitlines()[0] if run.stderr.strip() else f"exit {run.returncode}"
+            if args.list:
+                print(f"| {program.name} | refused | {first.replace(str(HERE) + '/', '')} |")
+            continue
+        accepted += 1
+        moves = [json.loads(line) for line in run.stdout.splitlines() if line.strip()]
+        problems = check_program(program, moves)
+        failures += [f"{program.name}: {p}" for p in problems]
+        if args.list:
+            print(f"| {program.name} | accepted | {len(moves)} moves{'; ' + problems[0] if problems else ''} |")
+    print(f"accepted {accepted} of {len(programs)} ({100.0 * accepted / max(1, len(programs)):.0f} %)")
+    for f in failures:
+        print(f"FAIL {f}")
+    if accepted < args.min_accepted:
+        print(f"FAIL fewer than {args.min_accepted} programs accepted")
+        return 1
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
