@@ -198,7 +198,8 @@ std::optional<Diagnostic> Executor::set_feed_and_spindle(std::vector<Move>& out)
     }
     if (const Word* t = words_.word('T'); t != nullptr && machine_.gcode_system != GCodeSystem::none) {
         if (auto e = select_lathe_tool(*t)) return e;
-        push(out, Io{IoKind::tool_select, modal_.tool.selected, 0});
+        // The event keeps the T word as written (T0101 is 101): `nckit expand` writes it back.
+        push(out, Io{IoKind::tool_select, static_cast<int>(t->value), 0});
     } else if (t != nullptr) {
         modal_.tool.selected = static_cast<int>(t->value);
         push(out, Io{IoKind::tool_select, modal_.tool.selected, 0});

@@ -72,6 +72,11 @@ std::optional<Diagnostic> Executor::check_cutter_comp() {
             }
             number = static_cast<int>(d->value);
         }
+        if (number == 0 && machine_.gcode_system != GCodeSystem::none) {
+            // A lathe's T0100 (or T0000): offset 00 has no nose radius, so nothing is compensated.
+            comp_radius_mm_ = 0;
+            return std::nullopt;
+        }
         if (number == 0) {
             return error(d != nullptr ? d->column : code_column, "cutter-comp",
                          fmt::format("G{:g} with D0: D0 is no offset, give the tool's offset number", code / 10.0));

@@ -20,7 +20,7 @@ std::string_view cycle_letters(GCode code) {
     if (code == lathe_rough_turning || code == lathe_rough_facing || code == lathe_pattern_repeat) {
         return "PQUWRD";
     }
-    if (code == lathe_face_grooving || code == lathe_od_grooving) return "XZUWPQR";
+    if (code == lathe_face_grooving || code == lathe_od_grooving) return "XZUWPQRIK";
     if (code == lathe_thread_repeat) return "XZUWPQRIKDA";
     return "";
 }

@@ -5,7 +5,9 @@
 // From the start point A each column pecks towards the end point by the peck depth, backing off
 // by R after each peck, feeds to the bottom, returns to A's level at rapid and steps across
 // (never past the end point) for the next column. P and Q without a decimal point count least
-// increments (P2000 = 2 mm); X is a diameter on a diameter lathe, P a radius.
+// increments (P2000 = 2 mm); X is a diameter on a diameter lathe, P a radius. The one-block form
+// of older controls (`G75 X Z I(peck in X) K(step in Z) F`, G74 with K the peck in Z and I the
+// step in X) takes the back-off from the last `G74/G75 R` block, none if there was none.
 #include <cmath>
 
 #include <fmt/format.h>
@@ -43,7 +45,7 @@ std::optional<Diagnostic> Executor::groove_cycle(std::vector<Move>& out) {
     if (const Word* r = words_.word('R'); r != nullptr && r->value != 0) {
         return error(r->column, "unsupported-word", fmt::format("{} R (relief at the bottom) is not supported", name));
     }
-    for (char letter : {'P', 'Q'}) {
+    for (char letter : {'P', 'Q', 'I', 'K'}) {
         if (const Word* w = words_.word(letter); w != nullptr && w->value < 0) {
             return error(w->column, "bad-value", fmt::format("{} {} must not be negative", name, letter));
         }
@@ -52,8 +54,16 @@ std::optional<Diagnostic> Executor::groove_cycle(std::vector<Move>& out) {
     const bool face = cycle == lathe_face_grooving;
     const Axis peck_axis = face ? Axis::Z : Axis::X;
     const Axis step_axis = face ? Axis::X : Axis::Z;
-    const double peck = increments(words_.word(face ? 'Q' : 'P'));
-    const double step = increments(words_.word(face ? 'P' : 'Q'));
+    // The one-block form of older controls names the peck and the step I (X) and K (Z).
+    const bool one_block = words_.has('I') || words_.has('K');
+    const char peck_letter = one_block ? (face ? 'K' : 'I') : (face ? 'Q' : 'P');
+    const char step_letter = one_block ? (face ? 'I' : 'K') : (face ? 'P' : 'Q');
+    if (one_block && (words_.has('P') || words_.has('Q'))) {
+        return error(column_of(words_.has('P') ? 'P' : 'Q'), "bad-combination",
+                     fmt::format("{}: give the peck and step as P Q or as I K, not both", name));
+    }
+    const double peck = increments(words_.word(peck_letter));
+    const double step = increments(words_.word(step_letter));
     const AxisVector start = position_;
     const AxisVector end = target_from_words(false);
     const double peck_dir = end[peck_axis] < start[peck_axis] ? -1.0 : 1.0;
@@ -62,7 +72,7 @@ std::optional<Diagnostic> Executor::groove_cycle(std::vector<Move>& out) {
     const double across = std::abs(end[step_axis] - start[step_axis]);
     if (across > 1e-9 && step <= 0) {
         return error(column, "missing-word",
-                     fmt::format("{} needs the step across ({}) to reach the end point", name, face ? 'P' : 'Q'));
+                     fmt::format("{} needs the step across ({}) to reach the end point", name, step_letter));
     }
     const double pecks = peck > 0 ? depth / peck : 1.0;
     const double columns = across > 1e-9 ? across / step + 1.0 : 1.0;

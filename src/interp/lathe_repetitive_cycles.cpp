@@ -156,12 +156,15 @@ std::optional<Diagnostic> Executor::pattern_cycle(std::vector<Move>& out) {
                               static_cast<std::int64_t>(words_.word('Q')->value), approach, shape)) {
         return e;
     }
-    if (approach == 0 || approach >= shape.size()) {
+    const Line* in = nullptr;  // the P block's move, its S T M events aside
+    for (std::size_t i = 0; i < approach; ++i) {
+        if (const auto* line = std::get_if<Line>(&shape[i].what)) in = line;
+    }
+    if (in == nullptr || approach >= shape.size()) {
         return error(column_of('P'), "bad-cycle", fmt::format("{}: the P block must move to the shape's start", name));
     }
-    const auto first = move_end(shape[approach - 1]);
-    const bool rapid_in = std::holds_alternative<Line>(shape[approach - 1].what) &&
-                          std::get<Line>(shape[approach - 1].what).rapid;
+    const std::optional<AxisVector> first = in->to;
+    const bool rapid_in = in->rapid;
     const int passes = settings.divisions;
     for (int pass = 1; pass <= passes; ++pass) {
         // Relief shrinks evenly: the full relief on pass 1, none on the last one.

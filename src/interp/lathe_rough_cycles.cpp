@@ -49,18 +49,28 @@ std::optional<Diagnostic> Executor::rough_cycle(std::vector<Move>& out) {
                               static_cast<std::int64_t>(words_.word('Q')->value), approach, shape)) {
         return e;
     }
-    if (approach != 1 || !std::holds_alternative<Line>(shape[0].what)) {
+    // The P block's move (its S, T or M events aside: they count only for G70).
+    const Line* approach_line = nullptr;
+    std::size_t approach_lines = 0;
+    for (std::size_t i = 0; i < approach; ++i) {
+        if (std::holds_alternative<Arc>(shape[i].what) || std::holds_alternative<SyncMove>(shape[i].what)) ++approach_lines;
+        if (const auto* line = std::get_if<Line>(&shape[i].what)) {
+            approach_line = line;
+            ++approach_lines;
+        }
+    }
+    if (approach_lines != 1 || approach_line == nullptr) {
         return error(column_of('P'), "bad-cycle", fmt::format("{}: the P block must make one G0 or G1 move", name));
     }
-    const Line& in = std::get<Line>(shape[0].what);
+    const Line& in = *approach_line;
     if (std::abs(in.to[axes.length] - in.from[axes.length]) > flat_mm) {
         // Type II (pockets) starts with a move in both axes; nckit cuts type I only.
-        return error_at(shape[0].where, "unsupported-cycle",
+        return error_at(shape[approach - 1].where, "unsupported-cycle",
                         fmt::format("{} type II (the P block moves in {} too) is not supported",
                                     name, letter(axes.length)));
     }
     std::vector<Move> profile;
-    for (std::size_t i = 1; i < shape.size(); ++i) {
+    for (std::size_t i = approach; i < shape.size(); ++i) {
         if (std::holds_alternative<SyncMove>(shape[i].what)) {
             return error_at(shape[i].where, "bad-cycle", fmt::format("{}: no threading in the finishing shape", name));
         }

@@ -46,9 +46,9 @@ def main() -> int:
         for name, (text, where) in cases.items():
             path = pathlib.Path(tmp) / name
             path.write_text(text)
-            run = run_nckit(nckit, "moves", path, "--machine", LATHE, text=True)
+            run = run_nckit(nckit, "plan", path, "--machine", LATHE, text=True)
             check(run.returncode == 2 and where in run.stderr, f"{name}: {where} exit 2 ({run.stderr.strip()})")
-            check(run.stdout == "", f"{name}: nothing moves")
+            check(run.stdout == "", f"{name}: no report")
     return summary()
 
 

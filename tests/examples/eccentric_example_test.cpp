@@ -137,7 +137,7 @@ TEST(EccentricExample, RoughingPassesStayOutsideTheFinishedProfile) {
 
 TEST(EccentricExample, EccentricityNotBelowTheRadiusIsAnAlarm) {
     std::filesystem::path program = std::filesystem::temp_directory_path() / "nckit_eccentric_bad.nc";
-    std::ofstream(program) << "G21 G18 G90\nG97 S60 M3\nG65 P9100 D60. E20. R20. K0 Z-30. Q2.5 F0.3 H0.1 U0.4\nM30\n";
+    std::ofstream(program) << "G21 G18\nG97 S60 M3\nG65 P9100 D60. E20. R20. K0 Z-30. Q2.5 F0.3 H0.1 U0.4\nM30\n";
     ProgramRun r = run(program);
     ASSERT_TRUE(r.error);
     EXPECT_EQ(r.error->alarm, 3001);

@@ -36,9 +36,10 @@ Case random_case(std::mt19937& rng) {
     c.shape.push_back(p);
     const int segments = std::uniform_int_distribution<int>(2, 7)(rng);
     for (int i = 0; i < segments; ++i) {
-        // 0 along Z, 1 a taper, 2 a face; the first runs along Z from A' (a face there would lie
-        // in front of the start point, where nothing is cut).
-        const int kind = std::uniform_int_distribution<int>(0, i == 0 ? 1 : 2)(rng);
+        // 0 along Z, 1 a taper, 2 a face. The first runs along Z from A': a taper or face there,
+        // moved forward by W, would lie partly in front of the start point, where a level has
+        // nothing to cut and is left to the last pass (Fanuc's behaviour too).
+        const int kind = i == 0 ? 0 : std::uniform_int_distribution<int>(0, 2)(rng);
         if (kind != 2) p.z -= uniform(1, 12);
         if (kind != 0) p.r += uniform(0.5, 5);
         c.shape.push_back(p);

@@ -38,7 +38,7 @@ TEST(LatheOffsets, T0101AppliesGeometryAndWearT0100Cancels) {
     EXPECT_DOUBLE_EQ(last_line(with).to[Axis::Z], 4.8);
     const auto& tool = std::get<Io>(with.at(0).what);
     EXPECT_EQ(tool.kind, IoKind::tool_select);
-    EXPECT_EQ(tool.number, 1);  // T0101 is tool 1
+    EXPECT_EQ(tool.number, 101);  // the T word as written: tool 1, offset 1
     auto cancelled = moves_of("T0101\nG0 X20. Z0\nT0100\nG0 X20. Z0\nM30\n", m);
     EXPECT_DOUBLE_EQ(last_line(cancelled).to[Axis::X], 10.0);
     EXPECT_DOUBLE_EQ(last_line(cancelled).to[Axis::Z], 0.0);
@@ -72,8 +72,12 @@ TEST(LatheOffsets, G10PWritesWearAndGeometry) {
     // G10 P1 U0.2: wear X +0.2 on the diameter (0.1 radius) -> 0.2 radius; P10001 X4.: geometry 2.
     auto moves = moves_of("G10 P1 U0.2\nG10 P10001 X4. W1. R0.8 Q2\n#100 = #2901\n#101 = #2301\nT0101\nG0 X20. Z0\n"
                           "G0 Z[#100 + #101]\nM30\n", m);
-    ASSERT_GE(moves.size(), 3u);
-    const Line& at = std::get<Line>(moves.at(moves.size() - 2).what);
+    std::vector<Line> lines;
+    for (const Move& move : moves) {
+        if (const auto* l = std::get_if<Line>(&move.what)) lines.push_back(*l);
+    }
+    ASSERT_EQ(lines.size(), 2u);
+    const Line& at = lines[0];
     EXPECT_DOUBLE_EQ(at.to[Axis::X], 10.0 + 2.0 + 0.2);
     EXPECT_DOUBLE_EQ(at.to[Axis::Z], 6.0 - 0.2);
     EXPECT_DOUBLE_EQ(last_line(moves).to[Axis::Z], 0.8 + 2.0 + 5.8);

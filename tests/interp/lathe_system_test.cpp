@@ -8,9 +8,9 @@ namespace {
 
 MachineConfig lathe(std::string_view machine_keys) {
     std::string text = "[machine]\nname = \"t\"\ndiameter_mode = true\n" + std::string(machine_keys) +
-                       "\n[[axis]]\nname = \"X\"\nmax_velocity = 100\nmax_acceleration = 500\nmax_jerk = 50000\n"
+                       "\n[[axis]]\nname = \"X\"\nkind = \"linear\"\nmax_velocity = 100\nmax_acceleration = 500\nmax_jerk = 50000\n"
                        "min = -10\nmax = 200\nsteps_per_unit = 800\n"
-                       "[[axis]]\nname = \"Z\"\nmax_velocity = 100\nmax_acceleration = 500\nmax_jerk = 50000\n"
+                       "[[axis]]\nname = \"Z\"\nkind = \"linear\"\nmax_velocity = 100\nmax_acceleration = 500\nmax_jerk = 50000\n"
                        "min = -300\nmax = 10\nsteps_per_unit = 800\n[spindle]\nmax_rpm = 4000\n";
     auto config = parse_machine_config(text, "lathe.toml");
     if (!config) {
@@ -62,7 +62,7 @@ TEST(LatheSystem, UAndWAreIncrementalInSystemA) {
 }
 
 TEST(LatheSystem, G28UWGoesHomeThroughTheCurrentPoint) {
-    auto moves = moves_of("G0 X50. Z0\nG28 U0 W0\nM30\n", system_a());
+    auto moves = moves_of("G0 X50. Z0\nG28 U0 W0\n", system_a());
     const Line& home = line_at(moves, moves.size() - 1);
     EXPECT_TRUE(home.rapid);
     EXPECT_DOUBLE_EQ(home.to[Axis::X], 0.0);
@@ -94,8 +94,8 @@ TEST(LatheSystem, SystemCReadsG70G71AsUnits) {
 
 TEST(LatheSystem, StartupCodesErrorsPointIntoTheMachineFile) {
     auto bad = parse_machine_config("[machine]\nname = \"t\"\ngcode_system = \"A\"\nstartup_gcodes = \"G18 G91\"\n"
-                                    "[[axis]]\nname = \"X\"\nmax_velocity = 1\nmax_acceleration = 1\nmax_jerk = 1\n"
-                                    "min = 0\nmax = 1\nsteps_per_unit = 1\n[[axis]]\nname = \"Z\"\nmax_velocity = 1\n"
+                                    "[[axis]]\nname = \"X\"\nkind = \"linear\"\nmax_velocity = 1\nmax_acceleration = 1\nmax_jerk = 1\n"
+                                    "min = 0\nmax = 1\nsteps_per_unit = 1\n[[axis]]\nname = \"Z\"\nkind = \"linear\"\nmax_velocity = 1\n"
                                     "max_acceleration = 1\nmax_jerk = 1\nmin = 0\nmax = 1\nsteps_per_unit = 1\n",
                                     "m.toml");
     ASSERT_TRUE(bad);
@@ -113,7 +113,7 @@ TEST(LatheSystem, StartupCodesErrorsPointIntoTheMachineFile) {
 
 TEST(LatheSystem, MillsHaveNoGCodeSystem) {
     auto mill = parse_machine_config("[machine]\nname = \"m\"\ngcode_system = \"A\"\n"
-                                     "[[axis]]\nname = \"X\"\nmax_velocity = 1\nmax_acceleration = 1\nmax_jerk = 1\n"
+                                     "[[axis]]\nname = \"X\"\nkind = \"linear\"\nmax_velocity = 1\nmax_acceleration = 1\nmax_jerk = 1\n"
                                      "min = 0\nmax = 1\nsteps_per_unit = 1\n[[axis]]\nname = \"Y\"\nmax_velocity = 1\n"
                                      "max_acceleration = 1\nmax_jerk = 1\nmin = 0\nmax = 1\nsteps_per_unit = 1\n",
                                      "mill.toml");
@@ -126,7 +126,7 @@ TEST(LatheSystem, MillsHaveNoGCodeSystem) {
 TEST(LatheSystem, TurningCycleG90WithTaper) {
     // Start X60 Z2; G90 X50 Z-30 R-2: rapid to X46 (radius 23 = 25 - 2), taper cut to X50 Z-30,
     // feed out to X60, rapid back to Z2. Then X45: the next pass with the same Z and R.
-    auto moves = moves_of("G0 X60. Z2.\nG90 X50. Z-30. R-2. F0.25\nX45.\nG0 X80.\nM30\n", system_a());
+    auto moves = moves_of("G0 X60. Z2.\nG90 X50. Z-30. R-2. F0.25\nX45.\nG0 X80.\n", system_a());
     ASSERT_EQ(moves.size(), 10u);
     EXPECT_TRUE(line_at(moves, 1).rapid);
     EXPECT_DOUBLE_EQ(line_at(moves, 1).to[Axis::X], 23.0);
@@ -144,7 +144,7 @@ TEST(LatheSystem, TurningCycleG90WithTaper) {
 }
 
 TEST(LatheSystem, FacingCycleG94) {
-    auto moves = moves_of("G0 X60. Z2.\nG94 X20. Z-2. F0.2\nM30\n", system_a());
+    auto moves = moves_of("G0 X60. Z2.\nG94 X20. Z-2. F0.2\n", system_a());
     ASSERT_EQ(moves.size(), 5u);
     EXPECT_DOUBLE_EQ(line_at(moves, 1).to[Axis::Z], -2.0);
     EXPECT_DOUBLE_EQ(line_at(moves, 1).to[Axis::X], 30.0);

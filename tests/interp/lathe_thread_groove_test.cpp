@@ -1,6 +1,7 @@
 // G76 multiple threading (two-block and one-block) and G74/G75 peck grooving, on numbers worked
 // by hand.
 #include <cmath>
+#include <numbers>
 
 #include <gtest/gtest.h>
 
@@ -34,7 +35,7 @@ TEST(LatheThreading, G76TwoBlockInfeedHasConstantArea) {
         const SyncMove& pull = syncs[2 * n + 1];
         const double x = 30.32 + 3.68 - depths[n];
         EXPECT_NEAR(cut.from[Axis::X], x, 1e-9) << n;
-        EXPECT_NEAR(cut.from[Axis::Z], 5 - depths[n] * std::tan(M_PI / 6), 1e-9) << n;
+        EXPECT_NEAR(cut.from[Axis::Z], 5 - depths[n] * std::tan(std::numbers::pi / 6), 1e-9) << n;
         EXPECT_NEAR(cut.to[Axis::Z], -25 + 6, 1e-9);  // the chamfer: one lead before the end
         EXPECT_NEAR(pull.to[Axis::X], x + 6, 1e-9);
         EXPECT_NEAR(pull.to[Axis::Z], -25, 1e-9);
@@ -68,7 +69,7 @@ TEST(LatheGrooving, G74PecksAlongZ) {
 TEST(LatheGrooving, G75PecksAlongXAndStepsInZ) {
     // From X42 Z-10 (radius 21) to X30 (radius 15) Z-14: 2 mm pecks, 0.5 back-off, columns at
     // Z-10, -13 and -14 (the last step shortened to the end point).
-    auto moves = moves_of("G0 X42. Z-10.\nG75 R0.5\nG75 X30. Z-14. P2000 Q3000 F0.05\nM30\n", system_a_lathe());
+    auto moves = moves_of("G0 X42. Z-10.\nG75 R0.5\nG75 X30. Z-14. P2000 Q3000 F0.05\n", system_a_lathe());
     std::vector<std::pair<double, double>> ends;
     for (const Move& m : moves) {
         if (const auto* l = std::get_if<Line>(&m.what); l != nullptr && m.where.line == 3 && !l->rapid) {
@@ -81,13 +82,24 @@ TEST(LatheGrooving, G75PecksAlongXAndStepsInZ) {
     EXPECT_DOUBLE_EQ(std::get<Line>(moves.back().what).to[Axis::Z], -10.0);
 }
 
+TEST(LatheGrooving, OneBlockG75PecksByI) {
+    // `G75 X0 I0.5` from X4 (radius 2): pecks of 0.5 on the radius to the centre, no back-off.
+    auto moves = moves_of("G0 X4. Z-3.\nG1 F0.1\nG75 X0 I0.5\nM30\n", system_a_lathe());
+    std::vector<double> x;
+    for (const Move& m : moves) {
+        if (const auto* l = std::get_if<Line>(&m.what); l != nullptr && m.where.line == 3) x.push_back(l->to[Axis::X]);
+    }
+    EXPECT_EQ(x, (std::vector<double>{1.5, 1.0, 0.5, 0.0, 2.0}));
+}
+
 TEST(LatheThreadGrooveErrors, MalformedCycles) {
     const MachineConfig lathe = system_a_lathe();
     EXPECT_EQ(error_where("G0 X24. Z5.\nG76 X18. Z-20. F1.5\n", lathe), "missing-word 2:1");
     EXPECT_EQ(error_where("G76 P1234567\n", lathe), "bad-value 1:5");
     EXPECT_EQ(error_where("G0 X24. Z5.\nG76 X18. Z-20. K0 D0.4 F1.5\n", lathe), "bad-value 2:16");
     EXPECT_EQ(error_where("G74 R-1.\n", lathe), "bad-value 1:5");
-    EXPECT_EQ(error_where("G0 X42. Z-10.\nG75 X0 I0.005 F0.1\n", lathe), "unused-word 2:8");
+    EXPECT_EQ(error_where("G0 X42. Z-10.\nG75 X0 I0.005 J1. F0.1\n", lathe), "unused-word 2:15");
+    EXPECT_EQ(error_where("G0 X42. Z-10.\nG75 X0 I0.005 P2000 F0.1\n", lathe), "bad-combination 2:15");
     EXPECT_EQ(error_where("G0 X42. Z-10.\nG75 X30. Z-14. P2000 F0.05\n", lathe), "missing-word 2:1");
 }
 

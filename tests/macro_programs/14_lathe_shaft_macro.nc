@@ -6,7 +6,7 @@ O0014 (LATHE: STEPPED SHAFT WITH A BALL END AND AN M24 X 2 THREAD, X IN DIAMETER
 ( Threading: G33 passes with depth = first depth x SQRT[pass], the last ones at full depth.  )
 ( #5001 reads X as a diameter here, as a Fanuc lathe shows it.                              )
 N10 G18 G21 G90 G40 G95
-N20 G50 S3000    (spindle limit for G96)
+N20 G92 S3000    (spindle limit for G96: G92 S in G-code system B)
 N30 T0101
 N40 G96 S200 M3
 N50 M8
