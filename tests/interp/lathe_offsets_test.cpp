@@ -1,4 +1,6 @@
 // A lathe's tool offsets as a 0i-T: T0101, T0100, G10 P, #2001-#2999; G50 S under G96.
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include "interp_support.hpp"
@@ -97,6 +99,55 @@ TEST(LatheOffsets, G50ClampsTheSpindleUnderG96) {
     const Line& cut = last_line(moves);
     // 200 m/min at 10 mm diameter would be 6366 rpm: clamped to 1500, so 0.1 mm/rev = 150 mm/min.
     EXPECT_DOUBLE_EQ(cut.feed.mm_per_min, 150.0);
+}
+
+}  // namespace
+}  // namespace nckit::test
+
+namespace nckit::test {
+namespace {
+
+MachineConfig lathe_with_noses() {
+    MachineConfig m = system_a_lathe();
+    for (int tip : {0, 3}) {
+        ToolEntry e;
+        e.number = tip == 0 ? 1 : 2;
+        e.radius_mm = 0.4;
+        e.orientation = tip;
+        m.tools.insert(e);
+    }
+    return m;
+}
+
+TEST(LatheNoseRadius, G42OffsetsTaperAndArcByTheNoseRadius) {
+    // Tip orientation 0: the nose centre is programmed, so the path is the contour moved out by
+    // r = 0.4. Along Z at radius 10 the centre runs at 10.4; on the 45-degree taper from (10,-10)
+    // to (20,-20) (x + z = 0) each end lies 0.4 from the line; the concave G2 of radius 10 about
+    // (30,-20) is cut at radius 9.6.
+    auto moves = moves_of("T0101\nG0 X60. Z5.\nG42 G1 X20. Z2. F0.2\nG1 Z-10.\nX40. Z-20.\nG2 X60. Z-30. R10.\n"
+                          "G40 G0 X80.\n",
+                          lathe_with_noses());
+    std::vector<Line> feeds;
+    std::vector<Arc> arcs;
+    for (const Move& m : moves) {
+        if (const auto* l = std::get_if<Line>(&m.what); l != nullptr && !l->rapid) feeds.push_back(*l);
+        if (const auto* a = std::get_if<Arc>(&m.what)) arcs.push_back(*a);
+    }
+    ASSERT_EQ(feeds.size(), 3u);
+    EXPECT_NEAR(feeds[1].from[Axis::X], 10.4, 1e-9);
+    EXPECT_NEAR(feeds[1].to[Axis::X], 10.4, 1e-9);
+    for (const AxisVector& p : {feeds[2].from, feeds[2].to}) {
+        EXPECT_NEAR((p[Axis::X] + p[Axis::Z]) / std::sqrt(2.0), 0.4, 1e-9);
+    }
+    ASSERT_EQ(arcs.size(), 2u);  // the corner round the taper's end, then the compensated G2
+    EXPECT_NEAR(arcs[1].center[Axis::X], 30.0, 1e-9);
+    EXPECT_NEAR(arcs[1].center[Axis::Z], -20.0, 1e-9);
+    EXPECT_NEAR(std::hypot(arcs[1].to[Axis::X] - 30.0, arcs[1].to[Axis::Z] + 20.0), 9.6, 1e-9);
+}
+
+TEST(LatheNoseRadius, TipOrientationsOneToEightAreRefused) {
+    EXPECT_EQ(error_where("T0202\nG0 X60. Z5.\nG42 G1 X20. Z2. F0.2\nG1 Z-10.\n", lathe_with_noses()),
+              "unsupported-cycle 3:1");
 }
 
 }  // namespace
