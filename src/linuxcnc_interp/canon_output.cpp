@@ -27,8 +27,8 @@ CANON_PLANE canon_plane(Plane plane) {
 
 }  // namespace
 
-CanonOutput::CanonOutput(const MachineConfig& machine, double g64_tolerance_mm, bool line_comments)
-    : machine_(machine), g64_tolerance_mm_(g64_tolerance_mm), line_comments_(line_comments) {}
+CanonOutput::CanonOutput(const MachineConfig& machine, double g64_tolerance_mm, bool exact_path, bool line_comments)
+    : machine_(machine), g64_tolerance_mm_(g64_tolerance_mm), exact_path_(exact_path), line_comments_(line_comments) {}
 
 double CanonOutput::program(std::size_t i, double machine_value) const {
     double v = machine_value - (*work_offset_)[i] - (*g92_offset_)[i];
@@ -70,6 +70,10 @@ void CanonOutput::set_path(const PathControl& path) {
     if (path_ && path_->exact_stop == path.exact_stop && path_->tolerance_mm == path.tolerance_mm) return;
     if (path.exact_stop) {
         SET_MOTION_CONTROL_MODE(CANON_EXACT_STOP, 0);
+    } else if (exact_path_) {
+        // LinuxCNC's G61: no blend at any corner (its blends leave the path by more than the G64
+        // tolerance, see docs/linuxcnc-plugin.md); nearly tangent joins still keep their speed.
+        SET_MOTION_CONTROL_MODE(CANON_EXACT_PATH, 0);
     } else {
         double tolerance_mm = path.tolerance_mm > 0 ? path.tolerance_mm : g64_tolerance_mm_;
         double tolerance = tolerance_mm / *length_factor_mm_;

@@ -18,7 +18,9 @@ enum class AfterMove { go_on, wait_for_motion };
 
 class CanonOutput {
 public:
-    CanonOutput(const MachineConfig& machine, double g64_tolerance_mm, bool line_comments);
+    //! `exact_path`: continuous-path blocks (G64) go out as LinuxCNC's exact path mode, so its
+    //! planner blends no corner and the machine stays on the programmed path.
+    CanonOutput(const MachineConfig& machine, double g64_tolerance_mm, bool exact_path, bool line_comments);
 
     //! The calls for one move. `view` holds the modes of the block that made it.
     AfterMove emit(const Move& move, const ModalView& view);
@@ -46,6 +48,7 @@ private:
 
     const MachineConfig& machine_;
     double g64_tolerance_mm_;
+    bool exact_path_;
     bool line_comments_;
 
     // What LinuxCNC was last told; empty: not yet (everything goes out before the first move).

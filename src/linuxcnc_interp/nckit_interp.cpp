@@ -4,7 +4,12 @@
 #include <cstring>
 #include <exception>
 
+#include <fstream>
+#include <sstream>
+
 #include <fmt/format.h>
+
+#include "nckit/core/tool_table.hpp"
 
 namespace nckit::lcnc {
 
@@ -38,6 +43,16 @@ int guarded(std::string& error, Body&& body) {
         error = "nckit interpreter: unexpected failure";
     }
     return INTERP_ERROR;
+}
+
+//! LinuxCNC's tool table as nckit's: in inches on an inch machine, else mm (a .toml file as TOML).
+Result<ToolTable> load_linuxcnc_tool_table(const std::filesystem::path& path, bool inch) {
+    if (!inch || path.extension() == ".toml") return load_tool_table(path);
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return load_tool_table(path);  // says why it cannot be read
+    std::ostringstream text;
+    text << in.rdbuf();
+    return parse_tool_tbl(text.str(), path.string(), true);
 }
 
 }  // namespace
@@ -84,6 +99,15 @@ int NckitInterp::init() {
             }
             machine_ = std::move(machine).value();
         }
+        if (!settings_.tool_table_file.empty()) {
+            auto tools = load_linuxcnc_tool_table(settings_.tool_table_file, settings_.tool_table_inch);
+            if (!tools) {
+                setup_error_ = format_diagnostic(tools.diagnostics().front());
+                return fail(*setup_error_);
+            }
+            machine_->tools = std::move(tools).value();
+            machine_->tools_file = settings_.tool_table_file.string();
+        }
         return static_cast<int>(INTERP_OK);
     });
 }
@@ -114,7 +138,7 @@ int NckitInterp::start_run() {
     options.retained_file = settings_.retained_file;
     options.max_blocks = settings_.max_blocks;
     interpreter_.emplace(*machine_, std::move(source).value(), options);
-    canon_.emplace(interpreter_->machine(), settings_.g64_tolerance_mm, settings_.line_comments);
+    canon_.emplace(interpreter_->machine(), settings_.g64_tolerance_mm, settings_.exact_path, settings_.line_comments);
     return INTERP_OK;
 }
 

@@ -37,6 +37,7 @@ std::optional<std::string> read_plugin_settings(const std::filesystem::path& ini
     };
     std::string section;
     std::string text;
+    bool tool_table_from_nckit = false;
     for (std::size_t number = 1; number <= max_ini_lines && std::getline(in, text); ++number) {
         std::string line = trim(text);
         if (line.empty() || line[0] == '#' || line[0] == ';') continue;
@@ -44,8 +45,20 @@ std::optional<std::string> read_plugin_settings(const std::filesystem::path& ini
             section = upper(trim(std::string_view(line).substr(1, line.find(']') - 1)));
             continue;
         }
-        if (section != "NCKIT") continue;
         std::size_t eq = line.find('=');
+        if (section != "NCKIT") {
+            // LinuxCNC's own tool table and length unit, unless [NCKIT] names a table itself.
+            if (eq == std::string::npos) continue;
+            std::string key = upper(trim(std::string_view(line).substr(0, eq)));
+            std::string value = trim(std::string_view(line).substr(eq + 1));
+            if (section == "EMCIO" && key == "TOOL_TABLE" && !tool_table_from_nckit && !value.empty()) {
+                settings.tool_table_file = path_of(value);
+            } else if (section == "TRAJ" && key == "LINEAR_UNITS") {
+                std::string unit = upper(value);
+                settings.tool_table_inch = unit == "INCH" || unit == "IN" || unit == "INCHES";
+            }
+            continue;
+        }
         auto where = [&](std::string_view what) {
             return fmt::format("{}:{}:1: error: [NCKIT] {}", ini_path.string(), number, what);
         };
@@ -72,12 +85,18 @@ std::optional<std::string> read_plugin_settings(const std::filesystem::path& ini
                 return where(fmt::format("G64_TOLERANCE = {}: expected a distance in mm, 0 or more", value));
             }
             settings.g64_tolerance_mm = v;
+        } else if (key == "TOOL_TABLE") {
+            settings.tool_table_file = path_of(value);
+            tool_table_from_nckit = true;
+        } else if (key == "EXACT_PATH") {
+            if (value != "0" && value != "1") return where(fmt::format("EXACT_PATH = {}: expected 0 or 1", value));
+            settings.exact_path = value == "1";
         } else if (key == "LINE_COMMENTS") {
             if (value != "0" && value != "1") return where(fmt::format("LINE_COMMENTS = {}: expected 0 or 1", value));
             settings.line_comments = value == "1";
         } else {
             return where(fmt::format("unknown key {} (MACHINE, LIBRARY, RETAINED, MAX_BLOCKS, G64_TOLERANCE, "
-                                     "LINE_COMMENTS)", key));
+                                     "EXACT_PATH, TOOL_TABLE, LINE_COMMENTS)", key));
         }
     }
     return std::nullopt;

@@ -15,6 +15,13 @@ struct PluginSettings {
     //! G64_TOLERANCE: largest distance from the programmed corner, mm, when the program says G64
     //! without P (LinuxCNC's own G64 without P keeps no bound). 0: no bound.
     double g64_tolerance_mm = 0;
+    //! EXACT_PATH = 1: G64 blocks run in LinuxCNC's exact path mode (its G61): no corner blended.
+    bool exact_path = false;
+    //! TOOL_TABLE, else LinuxCNC's own [EMCIO] TOOL_TABLE: the table H and D words read (and the
+    //! lathe's tool offsets); empty: the nckit machine file's tools, if any.
+    std::filesystem::path tool_table_file;
+    //! [TRAJ] LINEAR_UNITS is inch: LinuxCNC's tool table then holds inches.
+    bool tool_table_inch = false;
     //! LINE_COMMENTS = 1: a COMMENT("nckit-line N") before the motions of each source line.
     bool line_comments = false;
 };

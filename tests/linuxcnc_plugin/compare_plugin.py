@@ -19,7 +19,8 @@ plug-in it says so once and runs its own interpreter instead, which would compar
 interpreter with nckit (and fail on Macro B) rather than test the plug-in.
 
 The INI the plug-in reads ([NCKIT] section): MACHINE from the program's `( nckit-machine: F )`
-comment (resolved against examples/machines/), LIBRARY from --library, RETAINED a scratch file
+comment (resolved against examples/machines/), TOOL_TABLE from its `( nckit-tools: F )` comment
+(the same table `nckit moves --tools` gets), LIBRARY from --library, RETAINED a scratch file
 per run (both sides start with #500-#999 vacant), LINE_COMMENTS = 1 (a COMMENT("nckit-line N")
 before each source line's motions, which carries the line into rs274's output).
 
@@ -50,6 +51,8 @@ def write_ini(path: Path, setup: cl.Setup, library: Path | None, retained: Path)
         lines.append(f"MACHINE = {setup.machine_file}")
     if library is not None:
         lines.append(f"LIBRARY = {library}")
+    if setup.tools_file is not None:
+        lines.append(f"TOOL_TABLE = {setup.tools_file}")
     lines += [f"RETAINED = {retained}", "LINE_COMMENTS = 1", ""]
     path.write_text("\n".join(lines))
 
@@ -134,11 +137,6 @@ def main() -> int:
                           if p.suffix in (".ngc", ".nc") and p.name[:2].isdigit())
         for program in programs:
             if args.names and program.name not in args.names and program.stem not in args.names:
-                continue
-            if "nckit-tools:" in program.read_text(errors="replace"):
-                # The plug-in takes no tool table yet (docs/linuxcnc-plugin.md): such programs are
-                # listed, not compared.
-                print(f"skip {program.name}: needs a tool table, which the plug-in does not read yet")
                 continue
             ok, text = compare_one(args, program, library)
             print(text, flush=True)

@@ -143,10 +143,14 @@ def prepare(args, work):
     with open(ini_path, "w") as f:
         f.write(text)
     with open(os.path.join(work, "sampler.hal"), "w") as f:
-        f.write(f"# Commanded joint positions ({' '.join(axes)}), one row per servo period.\n"
-                f"loadrt sampler depth={SAMPLER_DEPTH} cfg={'f' * len(axes)}\n"
+        # The planner's commanded position (axis.L.pos-cmd) and the joints' (motor-pos-cmd, the
+        # planner's points through motion's cubic interpolator), one row per servo period.
+        f.write(f"# Commanded positions ({' '.join(axes)}): the planner's, then the joints'.\n"
+                f"loadrt sampler depth={SAMPLER_DEPTH} cfg={'f' * 2 * len(axes)}\n"
                 "addf sampler.0 servo-thread\n"
-                + "".join(f"net {a}pos => sampler.0.pin.{k}\n" for k, a in enumerate(axes)))
+                + "".join(f"net nckit-planner-{a.lower()} axis.{a.lower()}.pos-cmd => sampler.0.pin.{k}\n"
+                          for k, a in enumerate(axes))
+                + "".join(f"net {a}pos => sampler.0.pin.{len(axes) + k}\n" for k, a in enumerate(axes)))
     with open(os.path.join(work, "sim.var"), "w") as f:
         f.write("")
     nckit_opts = []
@@ -364,15 +368,19 @@ def parent_main(args):
             fail(f"LinuxCNC did not run the program; log tail:\n{log[-2000:]}")
         with open(result_path) as f:
             disp = json.load(f)
-        rows, gaps = read_samples(os.path.join(work, "samples.txt"), len(axes))
+        both, gaps = read_samples(os.path.join(work, "samples.txt"), 2 * len(axes))
         if gaps:
             fail(f"halsampler lost samples ({gaps} gaps)")
+        rows = [r[:len(axes)] for r in both]          # the planner's commanded positions
+        joint_rows = [r[len(axes):] for r in both]    # the joints' (after the interpolator)
+        joint_bound = interpolator_bound_mm(ini_path, axes)
         motions, error = nckit_moves(args, nckit_opts, work)
         if not rows:
             fail("no samples")
         if not motions:
             fail("nckit moves printed no motion")
         worst, reached, by_kind = check_path(rows, motions, axes)
+        joint_worst, _, joint_by_kind = check_path(joint_rows, motions, axes)
         last = dict(zip(axes, rows[-1]))
         end = motions[-1]["end"] if motions else {a: 0.0 for a in axes}
         off = max(abs(last[a] - end.get(a, 0.0)) for a in axes)
@@ -380,10 +388,17 @@ def parent_main(args):
                    "motions": len(motions), "worst_off_path_mm": worst,
                    "last_sample_from_end_mm": off, "linuxcnc_wall_s": disp.get("wall_s"),
                    "worst_off_path_by_kind_mm": by_kind,
+                   "joints_worst_off_path_mm": joint_worst,
+                   "joints_worst_off_path_by_kind_mm": joint_by_kind,
+                   "joints_interpolator_bound_mm": joint_bound,
                    "run_s": round(wall, 1), "errors": disp["errors"]}
         if worst > args.tolerance_mm:
-            fail(f"a sampled position lies {worst * 1000:.4f} um off nckit's path (allowed "
+            fail(f"a sampled planner position lies {worst * 1000:.4f} um off nckit's path (allowed "
                  f"{args.tolerance_mm * 1000:.4f} um): {json.dumps(summary)}")
+        if joint_worst > args.tolerance_mm + joint_bound:
+            fail(f"a sampled joint position lies {joint_worst * 1000:.4f} um off nckit's path (allowed "
+                 f"{(args.tolerance_mm + joint_bound) * 1000:.4f} um: the path tolerance plus motion's "
+                 f"interpolator bound): {json.dumps(summary)}")
         if args.expect_end:
             if disp["errors"] or not disp["finished"]:
                 fail(f"LinuxCNC reported errors: {disp['errors']} (phase {disp['phase']})")
@@ -416,6 +431,19 @@ def parent_main(args):
                 if os.path.isfile(src) and not name.startswith("rtapi"):
                     shutil.copy2(src, os.path.join(args.keep, name))
         shutil.rmtree(work, ignore_errors=True)
+
+
+def interpolator_bound_mm(ini_path, axes):
+    """How far LinuxCNC's joint interpolator may put a joint off the planner's path, mm.
+
+    Motion hands each planner point to a cubic interpolator per joint whose waypoint at period k
+    is (x[k-1] + 4 x[k] + x[k+1]) / 6: the planner's point moved by its second difference / 6,
+    at most a T^2 / 6 on an axis whose acceleration is limited to a (T the servo period). On
+    trivkins joints are axes; the distance bound is the norm over the axes."""
+    ini = read_ini(ini_path)
+    period_s = float(ini[("EMCMOT", "SERVO_PERIOD")][0]) * 1e-9
+    return math.sqrt(sum((float(ini[(f"AXIS_{a}", "MAX_ACCELERATION")][0]) * period_s ** 2 / 6) ** 2
+                         for a in axes))
 
 
 def read_samples(path, n):
