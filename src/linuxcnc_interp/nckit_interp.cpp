@@ -152,6 +152,7 @@ int NckitInterp::close() {
     program_path_.clear();
     line_ = 0;
     sequence_ = 0;
+    move_file_.clear();
     return INTERP_OK;
 }
 
@@ -186,6 +187,7 @@ int NckitInterp::read() {
         view_ = interpreter_->modal_view();
         if (auto* move = std::get_if<Move>(&result)) {
             line_ = static_cast<int>(move->where.line);
+            move_file_ = move->where.file ? *move->where.file : program_path_;
             if (move->sequence_number >= 0) sequence_ = static_cast<int>(move->sequence_number);
             pending_ = std::move(*move);
             return static_cast<int>(INTERP_OK);
@@ -253,11 +255,20 @@ size_t NckitInterp::line_length() {
 char* NckitInterp::file_name(char* buf, size_t buflen) { return copy_out(program_path_, buf, buflen); }
 char* NckitInterp::file(char* buf, size_t buflen) { return copy_out(program_path_, buf, buflen); }
 
-char* NckitInterp::stack_name(int, char* buf, size_t buflen) { return copy_out(std::string{}, buf, buflen); }
+// The call stack as far as the plug-in sees it: the file of the move last read, then the main
+// program when that is a called one (nckit does not hand out deeper levels).
+char* NckitInterp::stack_name(int index, char* buf, size_t buflen) {
+    std::string name;
+    if (index == 0) name = move_file_;
+    if (index == 1 && call_level() > 0) name = program_path_;
+    return copy_out(name, buf, buflen);
+}
 
 int NckitInterp::sequence_number() { return sequence_; }
 int NckitInterp::line() { return line_; }
-int NckitInterp::call_level() { return 0; }
+// 0 in the main program, 1 in a called one (G65, M98, M-/G-code calls; the depth of nested
+// calls is not tracked): LinuxCNC's status shows it as the subroutine level.
+int NckitInterp::call_level() { return !move_file_.empty() && move_file_ != program_path_ ? 1 : 0; }
 
 void NckitInterp::active_g_codes(int g[ACTIVE_G_CODES]) {
     const ModalView& v = view_;

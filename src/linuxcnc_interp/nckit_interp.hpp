@@ -73,6 +73,7 @@ private:
     std::string error_;                       // error_text's message
     int line_ = 0;
     int sequence_ = 0;
+    std::string move_file_;                   // the file of the move last read (a called program's)
 };
 
 }  // namespace nckit::lcnc

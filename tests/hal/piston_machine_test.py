@@ -7,11 +7,11 @@ turning piston.ngc.
 
 The example configuration is copied into a scratch folder with the cam table that
 `nckit piston piston.toml --cam-table` writes there (the INI names it relative to its folder, as
-the example does), this script as its DISPLAY and a sampler on
-the cam's pins. LinuxCNC is started as tests/linuxcnc_plugin/run_machine.py starts it (a terminal
-from `script`; as root RTAPI_UID=65534 and RTAPI_FIFO_PATH in a world-writable folder). The
-display part (Debian's /usr/bin/python3 with the `linuxcnc` module) resets the E-stop, switches
-the machine on, runs piston.ngc and records every servo period while it runs.
+the example does) and this script as its DISPLAY; the example's own sampler (piston_sampler.hal)
+records the cam's pins. LinuxCNC is started as tests/linuxcnc_plugin/run_machine.py starts it (a
+terminal from `script`; as root RTAPI_UID=65534 and RTAPI_FIFO_PATH in a world-writable folder).
+The display part (Debian's /usr/bin/python3 with the `linuxcnc` module) resets the E-stop,
+switches the machine on, runs piston.ngc and drains the sampler while it runs.
 
 Checks:
 - LinuxCNC ran the program to its end without an error, and the carriage reached Z 50;
@@ -45,10 +45,9 @@ import run_machine as rm  # noqa: E402  (INI reading and rewriting, starting Lin
 
 EXAMPLE = os.path.join("examples", "linuxcnc", "piston_lathe")
 LOCKFILE = "/tmp/nckit-linuxcnc.lock"
-# Sampled every period: encoder counts, Z, the cam's wanted position, its command, the servo's
-# position, the error, the fault bit.
-SAMPLED = [("s", "spindle-counts"), ("f", "Zpos"), ("f", "fts-wanted"), ("f", "fts-command"),
-           ("f", "fts-position"), ("f", "fts-error"), ("b", "fts-fault")]
+# The columns piston_sampler.hal records after halsampler's tag: encoder counts, Z, the cam's
+# wanted position, its command, the servo's position, the error, the fault bit.
+COLUMNS = 7
 Z_END_MM = 50.0
 COUNTS_PER_TURN = 360
 PROGRAMMED_RPM = 2500.02
@@ -61,7 +60,7 @@ def fail(message):
 
 def prepare(args, work):
     src = os.path.join(args.source, EXAMPLE)
-    for name in ("piston_machine.hal", "piston_machine.tbl", "piston.ngc"):
+    for name in ("piston_machine.hal", "piston_sampler.hal", "piston_machine.tbl", "piston.ngc"):
         shutil.copyfile(os.path.join(src, name), os.path.join(work, name))
     table = os.path.join(work, "piston_cam.csv")
     job = subprocess.run([args.nckit, "piston", os.path.join(src, "piston.toml"), "--cam-table", table,
@@ -75,17 +74,11 @@ def prepare(args, work):
     replace = {("DISPLAY", "DISPLAY"): display,
                ("RS274NGC", "PARAMETER_FILE"): os.path.join(work, "piston_machine.var"),
                ("NCKIT_CAM", "LEARNING"): "1" if args.learning else "0"}
-    append = {"HAL": [f"HALFILE = {os.path.join(work, 'sampler.hal')}"]}
     with open(os.path.join(src, "piston_machine.ini")) as f:
-        text = rm.rewrite_ini(f.read(), replace, append)
+        text = rm.rewrite_ini(f.read(), replace, {})
     ini_path = os.path.join(work, "piston_machine.ini")
     with open(ini_path, "w") as f:
         f.write(text)
-    with open(os.path.join(work, "sampler.hal"), "w") as f:
-        f.write("# nckit_cam's pins, one row per servo period.\n"
-                f"loadrt sampler depth=60000 cfg={''.join(t for t, _ in SAMPLED)}\n"
-                "addf sampler.0 servo-thread\n"
-                + "".join(f"net {sig} => sampler.0.pin.{k}\n" for k, (_, sig) in enumerate(SAMPLED)))
     with open(os.path.join(work, "piston_machine.var"), "w") as f:
         f.write("")
     with open(os.path.join(work, "run.json"), "w") as f:
@@ -143,7 +136,7 @@ def read_rows(path):
             if line.strip() == "overrun":
                 gaps += 1
                 continue
-            if len(parts) != 1 + len(SAMPLED):
+            if len(parts) != 1 + COLUMNS:
                 continue
             tag = int(parts[0])
             if last_tag is not None and tag != last_tag + 1:

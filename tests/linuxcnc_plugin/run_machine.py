@@ -21,6 +21,8 @@ Checks:
 - every sampled position lies on nckit's move path (lines, arcs, spindle-synchronised moves, in
   machine coordinates) within 1e-4 mm, the samples pass along the path in order;
 - --expect-end: no error, and the last sample is the end of nckit's last move (program end);
+- --expect-call-level N: the highest subroutine level LinuxCNC's status showed (the plug-in's
+  call_level(): 0 in the main program, 1 in a called one) is N;
 - --expect-alarm N: LinuxCNC reports an error naming `alarm N` and `PROGRAM:LINE:` (the line nckit
   reports), the machine stops at the end of the last move before that block: nothing of the
   block moved.
@@ -187,9 +189,14 @@ def display_main(argv):
         # An alarm may stop the program at once: errors end the wait, they do not fail it here.
         session.wait_for(lambda: s.interp_state != linuxcnc.INTERP_IDLE or s.queue > 0 or not s.inpos
                          or result["errors"], "the program to start", 10, stop_on_error=False)
-        session.wait_for(lambda: s.interp_state == linuxcnc.INTERP_IDLE and s.queue == 0 and s.inpos
-                         and s.exec_state == linuxcnc.EXEC_DONE, "the program to finish",
-                         run["run_timeout_s"], stop_on_error=False)
+        result["max_call_level"] = 0
+
+        def finished():
+            # The subroutine level task reports (the plug-in's call_level()), at its highest.
+            result["max_call_level"] = max(result["max_call_level"], s.call_level)
+            return (s.interp_state == linuxcnc.INTERP_IDLE and s.queue == 0 and s.inpos
+                    and s.exec_state == linuxcnc.EXEC_DONE)
+        session.wait_for(finished, "the program to finish", run["run_timeout_s"], stop_on_error=False)
         result["wall_s"] = time.monotonic() - t0
         time.sleep(0.3)
         session.poll_errors()
@@ -391,6 +398,7 @@ def parent_main(args):
                    "joints_worst_off_path_mm": joint_worst,
                    "joints_worst_off_path_by_kind_mm": joint_by_kind,
                    "joints_interpolator_bound_mm": joint_bound,
+                   "max_call_level": disp.get("max_call_level"),
                    "run_s": round(wall, 1), "errors": disp["errors"]}
         if worst > args.tolerance_mm:
             fail(f"a sampled planner position lies {worst * 1000:.4f} um off nckit's path (allowed "
@@ -399,6 +407,9 @@ def parent_main(args):
             fail(f"a sampled joint position lies {joint_worst * 1000:.4f} um off nckit's path (allowed "
                  f"{(args.tolerance_mm + joint_bound) * 1000:.4f} um: the path tolerance plus motion's "
                  f"interpolator bound): {json.dumps(summary)}")
+        if args.expect_call_level is not None and disp.get("max_call_level") != args.expect_call_level:
+            fail(f"LinuxCNC's status showed call level {disp.get('max_call_level')} at most, not "
+                 f"{args.expect_call_level}: {json.dumps(summary)}")
         if args.expect_end:
             if disp["errors"] or not disp["finished"]:
                 fail(f"LinuxCNC reported errors: {disp['errors']} (phase {disp['phase']})")
@@ -477,6 +488,8 @@ def main():
     ap.add_argument("--spindle-override", type=float, default=1.0)
     ap.add_argument("--tolerance-mm", type=float, default=TOL_MM,
                     help="largest distance of a sample from nckit's path (default %(default)s)")
+    ap.add_argument("--expect-call-level", type=int, metavar="N",
+                    help="the highest subroutine level LinuxCNC's status shows during the run")
     ap.add_argument("--timeout", type=float, default=600.0)
     ap.add_argument("--keep", metavar="DIR", help="keep the configuration, log and samples here")
     return parent_main(ap.parse_args())

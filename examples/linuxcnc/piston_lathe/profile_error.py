@@ -2,11 +2,12 @@
 
   profile_error.py SAMPLES.txt NCKIT.json [LEARNING]
 
-SAMPLES: halsampler -t lines `tag counts z wanted command position error`. The cut is every
-sample from the first at which Z has left the crown; the error there is the axis position minus
-where the cam wants it (nckit_cam's error pin): its peak to valley and RMS in um, as
-`nckit piston` reports them over the turned surface, beside its feedforward run (its learning
-run when LEARNING is 1). Prints one JSON object.
+SAMPLES: halsampler -t lines `tag counts z wanted command position error [fault]` (from
+piston_lathe.hal, or from piston_sampler.hal on the machine of piston_machine.ini). The cut is
+every sample while Z is between the crown (its first value) and its end (its largest value);
+the error there is the axis position minus where the cam wants it (nckit_cam's error pin): its
+peak to valley and RMS in um, as `nckit piston` reports them over the turned surface, beside its
+feedforward run (its learning run when LEARNING is 1). Prints one JSON object.
 """
 import json
 import math
@@ -16,19 +17,19 @@ import sys
 def main():
     samples, nckit_json = sys.argv[1], sys.argv[2]
     run = "learning" if len(sys.argv) > 3 and sys.argv[3] == "1" else "feedforward"
-    errors = []
-    first_z = None
+    rows = []
     with open(samples) as f:
         for line in f:
             fields = line.split()
-            if len(fields) != 7:
+            if len(fields) < 7:
                 if line.strip() == "overrun":
                     sys.exit(f"{samples}: the sampler overran: samples were lost")
                 continue
-            z, error = float(fields[2]), float(fields[6])
-            first_z = z if first_z is None else first_z
-            if z > first_z:
-                errors.append(error * 1e3)
+            rows.append((float(fields[2]), float(fields[6])))
+    if not rows:
+        sys.exit(f"{samples}: no samples")
+    first_z, last_z = rows[0][0], max(z for z, _ in rows)
+    errors = [error * 1e3 for z, error in rows if first_z < z < last_z]
     if len(errors) < 1000:
         sys.exit(f"{samples}: only {len(errors)} samples of the cut")
     with open(nckit_json) as f:
