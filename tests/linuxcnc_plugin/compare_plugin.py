@@ -19,10 +19,11 @@ plug-in it says so once and runs its own interpreter instead, which would compar
 interpreter with nckit (and fail on Macro B) rather than test the plug-in.
 
 The INI the plug-in reads ([NCKIT] section): MACHINE from the program's `( nckit-machine: F )`
-comment (resolved against examples/machines/), TOOL_TABLE from its `( nckit-tools: F )` comment
-(the same table `nckit moves --tools` gets), LIBRARY from --library, RETAINED a scratch file
+comment (resolved against examples/machines/), LIBRARY from --library, RETAINED a scratch file
 per run (both sides start with #500-#999 vacant), LINE_COMMENTS = 1 (a COMMENT("nckit-line N")
-before each source line's motions, which carries the line into rs274's output).
+before each source line's motions, which carries the line into rs274's output); and [EMCIO]
+TOOL_TABLE, LinuxCNC's own key, from the program's `( nckit-tools: F )` comment (the table
+`nckit moves --tools` gets).
 
 Exit status: 0 when every program matches, 1 otherwise (and when rs274, nckit or the plug-in is
 missing).
@@ -51,9 +52,10 @@ def write_ini(path: Path, setup: cl.Setup, library: Path | None, retained: Path)
         lines.append(f"MACHINE = {setup.machine_file}")
     if library is not None:
         lines.append(f"LIBRARY = {library}")
-    if setup.tools_file is not None:
-        lines.append(f"TOOL_TABLE = {setup.tools_file}")
     lines += [f"RETAINED = {retained}", "LINE_COMMENTS = 1", ""]
+    if setup.tools_file is not None:
+        # LinuxCNC's own tool table key, which the plug-in reads when [NCKIT] names none.
+        lines += ["[EMCIO]", f"TOOL_TABLE = {setup.tools_file}", ""]
     path.write_text("\n".join(lines))
 
 
