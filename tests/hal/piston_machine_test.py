@@ -41,7 +41,8 @@ REPO = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, os.path.join(REPO, "bench"))
 sys.path.insert(0, os.path.join(REPO, "tests", "linuxcnc_plugin"))
 import linuxcnc_planner as lp  # noqa: E402  (the display session, stopping LinuxCNC)
-import run_machine as rm  # noqa: E402  (INI reading and rewriting, starting LinuxCNC)
+import run_machine as rm  # noqa: E402  (starting LinuxCNC)
+from machine_support import rewrite_ini  # noqa: E402
 
 EXAMPLE = os.path.join("examples", "linuxcnc", "piston_lathe")
 LOCKFILE = "/tmp/nckit-linuxcnc.lock"
@@ -75,7 +76,7 @@ def prepare(args, work):
                ("RS274NGC", "PARAMETER_FILE"): os.path.join(work, "piston_machine.var"),
                ("NCKIT_CAM", "LEARNING"): "1" if args.learning else "0"}
     with open(os.path.join(src, "piston_machine.ini")) as f:
-        text = rm.rewrite_ini(f.read(), replace, {})
+        text = rewrite_ini(f.read(), replace, {})
     ini_path = os.path.join(work, "piston_machine.ini")
     with open(ini_path, "w") as f:
         f.write(text)
