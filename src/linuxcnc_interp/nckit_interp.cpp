@@ -99,17 +99,17 @@ int NckitInterp::init() {
             }
             machine_ = std::move(machine).value();
         }
-        if (!settings_.tool_table_file.empty()) {
-            auto tools = load_linuxcnc_tool_table(settings_.tool_table_file, settings_.tool_table_inch);
-            if (!tools) {
-                setup_error_ = format_diagnostic(tools.diagnostics().front());
-                return fail(*setup_error_);
-            }
-            machine_->tools = std::move(tools).value();
-            machine_->tools_file = settings_.tool_table_file.string();
-        }
-        return static_cast<int>(INTERP_OK);
+        return load_tools();
     });
+}
+
+int NckitInterp::load_tools() {
+    if (settings_.tool_table_file.empty()) return INTERP_OK;
+    auto tools = load_linuxcnc_tool_table(settings_.tool_table_file, settings_.tool_table_inch);
+    if (!tools) return fail(format_diagnostic(tools.diagnostics().front()));
+    machine_->tools = std::move(tools).value();
+    machine_->tools_file = settings_.tool_table_file.string();
+    return INTERP_OK;
 }
 
 int NckitInterp::open(const char* filename) {
@@ -118,6 +118,8 @@ int NckitInterp::open(const char* filename) {
         if (!machine_ && !setup_error_) init();
         if (setup_error_) return fail(*setup_error_);
         if (filename == nullptr || filename[0] == '\0') return fail("nckit interpreter: no program file given");
+        // The tool table again: offsets set on the machine since (G10 L1, the table editor) count.
+        if (int status = load_tools(); status != INTERP_OK) return status;
         // Opened once here so that a missing file is reported at open, as LinuxCNC's own does.
         auto source = ProgramSource::open(filename);
         if (!source) return fail_with(source.diagnostics().front());

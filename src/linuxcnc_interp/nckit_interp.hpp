@@ -54,6 +54,7 @@ public:
 private:
     int fail(std::string message);       //!< keeps the message for error_text: INTERP_ERROR
     int start_run();                     //!< the interpreter for the opened file
+    int load_tools();                    //!< the tool table of the settings into machine_
     int fail_with(const Diagnostic& d);  //!< a program error: its FILE:LINE:COL text
 
     std::string ini_path_;

@@ -1,0 +1,72 @@
+#!/usr/bin/env python3
+"""Bad plug-in settings in real LinuxCNC: `rs274 -p <plug-in> -i BAD.ini -g PROGRAM` must load the
+plug-in, report the setting at fault as `FILE:LINE:COL: error: ...` and issue no motion.
+
+  ini_errors.py --plugin LIB.so --program PROGRAM.ngc
+
+Cases: a tool table that does not exist ([EMCIO] TOOL_TABLE, LinuxCNC's own key), a tool table
+with a bad row ([NCKIT] TOOL_TABLE), EXACT_PATH with a value other than 0 or 1, an unknown
+[NCKIT] key. Exit status 0 when every case is reported so, 1 otherwise.
+"""
+import argparse
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+
+CASES = [
+    # (name, INI text, tool table text or None, what stderr must say)
+    ("missing tool table", "[EMCIO]\nTOOL_TABLE = nothere.tbl\n", None,
+     r"nothere\.tbl:0:0: error: cannot read tool file"),
+    ("bad tool table row", "[NCKIT]\nTOOL_TABLE = tools.tbl\n", "T1 P1 Z10.0 D6.0\nT2 P2 Zabc\n",
+     r"tools\.tbl:2:\d+: error: "),
+    ("bad EXACT_PATH", "[NCKIT]\nEXACT_PATH = yes\n", None,
+     r"plugin\.ini:2:1: error: \[NCKIT\] EXACT_PATH = yes: expected 0 or 1"),
+    ("unknown key", "[NCKIT]\nTOOLTABLE = tools.tbl\n", None,
+     r"plugin\.ini:2:1: error: \[NCKIT\] unknown key TOOLTABLE"),
+]
+
+
+def run_case(args, name, ini_text, table_text, wanted):
+    with tempfile.TemporaryDirectory(prefix="nckit-plugin-ini-") as work:
+        ini = os.path.join(work, "plugin.ini")
+        with open(ini, "w") as f:
+            f.write(ini_text)
+        if table_text is not None:
+            with open(os.path.join(work, "tools.tbl"), "w") as f:
+                f.write(table_text)
+        proc = subprocess.run([args.rs274, "-p", args.plugin, "-i", ini, "-g", args.program], cwd=work,
+                              stdin=subprocess.DEVNULL, capture_output=True, text=True, timeout=60)
+    if f"using custom interpreter '{args.plugin}'" not in proc.stderr:
+        return f"{name}: rs274 did not load the plug-in: {proc.stderr.strip()[:200]}"
+    if not re.search(wanted, proc.stderr):
+        return f"{name}: expected /{wanted}/ on stderr, got: {proc.stderr.strip()[:300]}"
+    if proc.returncode == 0:
+        return f"{name}: rs274 exited 0"
+    if "STRAIGHT_" in proc.stdout or "ARC_FEED" in proc.stdout:
+        return f"{name}: motion was issued: {proc.stdout.strip()[:200]}"
+    return None
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--plugin", required=True)
+    ap.add_argument("--program", required=True)
+    ap.add_argument("--rs274", default=shutil.which("rs274"))
+    args = ap.parse_args()
+    if not args.rs274:
+        print("error: LinuxCNC's rs274 not found; run scripts/deps.sh", file=sys.stderr)
+        return 1
+    args.plugin = os.path.abspath(args.plugin)
+    args.program = os.path.abspath(args.program)
+    failures = [f for f in (run_case(args, *case) for case in CASES) if f]
+    for f in failures:
+        print(f"FAIL {f}")
+    print(f"{len(CASES) - len(failures)} of {len(CASES)} bad settings reported")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
