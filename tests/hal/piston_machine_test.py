@@ -42,7 +42,7 @@ sys.path.insert(0, os.path.join(REPO, "bench"))
 sys.path.insert(0, os.path.join(REPO, "tests", "linuxcnc_plugin"))
 import linuxcnc_planner as lp  # noqa: E402  (the display session, stopping LinuxCNC)
 import run_machine as rm  # noqa: E402  (starting LinuxCNC)
-from machine_support import rewrite_ini  # noqa: E402
+from machine_support import open_lock, rewrite_ini  # noqa: E402
 
 EXAMPLE = os.path.join("examples", "linuxcnc", "piston_lathe")
 LOCKFILE = "/tmp/nckit-linuxcnc.lock"
@@ -72,6 +72,7 @@ def prepare(args, work):
     with open(display, "w") as f:
         f.write("#!/bin/sh\n# LinuxCNC DISPLAY: the --display mode of piston_machine_test.py\n"
                 f"exec /usr/bin/python3 '{os.path.abspath(__file__)}' --display \"$@\"\n")
+    os.chmod(display, 0o755)
     replace = {("DISPLAY", "DISPLAY"): display,
                ("RS274NGC", "PARAMETER_FILE"): os.path.join(work, "piston_machine.var"),
                ("NCKIT_CAM", "LEARNING"): "1" if args.learning else "0"}
@@ -186,7 +187,7 @@ def parent_main(args):
     work = tempfile.mkdtemp(prefix="nckit-piston-machine-")
     os.chmod(work, 0o755)
     env = dict(os.environ)
-    lock = open(LOCKFILE, "a")
+    lock = open_lock(LOCKFILE)
     try:
         fcntl.flock(lock, fcntl.LOCK_EX)
         ini_path, nckit = prepare(args, work)
@@ -218,7 +219,7 @@ def parent_main(args):
         print(json.dumps(figures))
         return 0
     finally:
-        lock.close()
+        os.close(lock)
         if args.keep:
             os.makedirs(args.keep, exist_ok=True)
             for name in os.listdir(work):

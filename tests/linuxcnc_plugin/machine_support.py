@@ -4,6 +4,7 @@ nckit's move path (lines, arcs and helices, spindle-synchronised moves, in machi
 """
 
 import math
+import os
 
 TOL_MM = 1e-4
 
@@ -142,3 +143,9 @@ def read_samples(path, n):
             last_tag = tag
             rows.append(tuple(float(v) for v in parts[1:]))
     return rows, gaps
+
+
+def open_lock(path):
+    """The lock file, opened for flock by any user: read-only, so that a file another user made
+    (root's 0644, say) serves a plain user too; created when missing."""
+    return os.open(path, os.O_RDONLY | os.O_CREAT, 0o666)

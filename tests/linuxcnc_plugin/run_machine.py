@@ -47,8 +47,8 @@ REPO = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, os.path.join(REPO, "bench"))
 import linuxcnc_planner as lp  # noqa: E402  (starting and stopping LinuxCNC, reading samples)
 sys.path.insert(0, HERE)
-from machine_support import (TOL_MM, check_path, interpolator_bound_mm, read_ini,  # noqa: E402
-                             read_samples, rewrite_ini)
+from machine_support import (TOL_MM, check_path, interpolator_bound_mm, open_lock,  # noqa: E402
+                             read_ini, read_samples, rewrite_ini)
 
 LOCKFILE = "/tmp/nckit-linuxcnc.lock"  # the flock that keeps nckit's LinuxCNC runs one at a time
 SAMPLER_DEPTH = 200000
@@ -238,7 +238,7 @@ def parent_main(args):
             fail(f"'{tool}' not on PATH: install linuxcnc-uspace (scripts/deps.sh)")
     work = tempfile.mkdtemp(prefix="nckit-plugin-machine-")
     env = dict(os.environ)
-    lock = open(LOCKFILE, "a")
+    lock = open_lock(LOCKFILE)
     try:
         fcntl.flock(lock, fcntl.LOCK_EX)  # one LinuxCNC at a time, manual runs included
         os.chmod(work, 0o755)
@@ -328,7 +328,7 @@ def parent_main(args):
         print(json.dumps(summary))
         return 0
     finally:
-        lock.close()
+        os.close(lock)
         if args.keep:
             os.makedirs(args.keep, exist_ok=True)
             for name in os.listdir(work):
