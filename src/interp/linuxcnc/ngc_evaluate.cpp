@@ -38,7 +38,11 @@ public:
             }
             case Op::exists: {
                 const Node& param = line_.nodes[static_cast<std::size_t>(node.a)];
-                return parameters_.exists(line_.names[static_cast<std::size_t>(param.name)]) ? 1.0 : 0.0;
+                if (param.op == Op::named) {
+                    return parameters_.exists(line_.names[static_cast<std::size_t>(param.name)]) ? 1.0 : 0.0;
+                }
+                double index = std::round(param.a >= 0 ? eval(param.a) : param.value);
+                return index >= 1 && index <= static_cast<double>(max_parameter) ? 1.0 : 0.0;
             }
             case Op::negate: return -eval(node.a);
             case Op::function: return function(node);

@@ -313,13 +313,12 @@ private:
     std::optional<Diagnostic> function(std::int32_t& out) {
         std::uint32_t col = column();
         if (accept("exists")) {
-            if (peek() != '[' || peek(1) != '#' || peek(2) != '<') {
-                return error(col, "EXISTS takes a named parameter: EXISTS[#<name>]");
-            }
+            // EXISTS[#<name>]: defined or not; EXISTS[#n]: n is a parameter number (1-5601).
+            if (peek() != '[' || peek(1) != '#') return error(col, "EXISTS takes a parameter: EXISTS[#<name>]");
             ++pos_;
             std::int32_t param = -1;
             if (auto e = parameter(param)) return e;
-            if (peek() != ']') return error(column(), "']' expected after EXISTS[#<name>");
+            if (peek() != ']') return error(column(), "expected ']' after the parameter of EXISTS");
             ++pos_;
             out = add(Node{Op::exists, Function::abs, param, -1, 0, -1, col});
             return std::nullopt;

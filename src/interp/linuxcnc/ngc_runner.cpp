@@ -189,11 +189,14 @@ std::optional<Diagnostic> NgcRunner::translate_block() {
     const bool dwell = has_g(block_, 4);
     int m_io = 0;
     for (const Word& w : block_.words) {
-        if (w.letter == 'M' && w.value >= 62 && w.value <= 66) m_io = static_cast<int>(w.value);
+        if (w.letter == 'M' && ((w.value >= 50 && w.value <= 53) || (w.value >= 61 && w.value <= 68))) {
+            m_io = static_cast<int>(w.value);
+        }
     }
     if (m_io != 0) {
-        // Digital and analog I/O (M62-M65 P pin, M66 P/E L Q): events without motion; the pin
-        // and wait words are LinuxCNC's and have no meaning for the planner.
+        // Override switches (M50-M53 P), M61 Q (set the loaded tool), digital and analog I/O
+        // (M62-M65 P, M66 P E L Q, M67/M68 E Q): events without motion; their pin, value and
+        // wait words are LinuxCNC's and have no meaning for the planner.
         std::erase_if(block_.words, [](const Word& w) {
             return w.letter == 'P' || w.letter == 'E' || w.letter == 'L' || w.letter == 'Q';
         });
@@ -219,7 +222,28 @@ std::optional<Diagnostic> NgcRunner::translate_block() {
     for (Word& w : block_.words) {
         if (w.letter == 'G' && std::abs(w.value - 61.1) < 1e-9) w.value = 61;  // exact path: as G61 here
     }
+    add_motion_to_here();
     return std::nullopt;
+}
+
+void NgcRunner::add_motion_to_here() {
+    // LinuxCNC moves to where it is when a block names G0 or G1 without an axis word (`G0 S1000`,
+    // `G1 F100`): a zero-length move, which ends blending there. The Executor moves only for axis
+    // words, so the block gets the current X.
+    const Word* motion = nullptr;
+    for (const Word& w : block_.words) {
+        if (w.letter == 'G' && (w.value == 0 || w.value == 1)) motion = &w;
+        if (w.letter == 'G' && (w.value == 4 || w.value == 10 || w.value == 28 || w.value == 30 || w.value == 52 ||
+                                w.value == 53 || w.value == 92)) {
+            return;  // those take axis words for themselves
+        }
+        if (axis_from_letter(w.letter).has_value()) return;
+    }
+    if (motion == nullptr || machine_.axes.empty()) return;
+    const char axis_char = letter(machine_.axes.front().axis);
+    const bool incremental = executor_.modal_view().incremental;
+    const double here = incremental ? 0.0 : axis_position(axis_char).value_or(0.0);
+    block_.words.push_back(Word{axis_char, here, true, motion->column, -1});
 }
 
 std::optional<Diagnostic> NgcRunner::comments() {

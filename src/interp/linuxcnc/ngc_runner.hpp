@@ -54,6 +54,7 @@ private:
     std::optional<Diagnostic> resolve_block();
     std::optional<Diagnostic> translate_block();
     std::optional<Diagnostic> comments();
+    void add_motion_to_here();
     [[nodiscard]] Diagnostic fail(std::uint32_t column, std::string message) const;
     [[nodiscard]] ProgramSource& source() { return *current_; }
     std::optional<Diagnostic> switch_to(const std::string& file, std::uint64_t offset, std::uint32_t line);
