@@ -16,6 +16,7 @@ Exit status: 0 when every program agrees, 1 otherwise.
 from __future__ import annotations
 
 import argparse
+import fcntl
 import os
 import re
 import shutil
@@ -75,7 +76,13 @@ def main() -> int:
     ap.add_argument("--timeout", type=float, default=120.0)
     ap.add_argument("--ignore-lines", action="store_true", help="do not compare source lines")
     ap.add_argument("--summary", action="store_true", help="print acceptance figures")
+    ap.add_argument("--lock", type=Path, default=None,
+                    help="hold an flock on this file for the run (CTest: /tmp/nckit-linuxcnc.lock, "
+                         "which manual runs take with `flock`): one LinuxCNC at a time on the machine")
     args = ap.parse_args()
+    if args.lock is not None:
+        lock_file = open(args.lock, "a")  # noqa: SIM115 - held until the process exits
+        fcntl.flock(lock_file, fcntl.LOCK_EX)
     args.rs274 = args.rs274 or shutil.which("rs274")
     if not args.rs274:
         print("error: LinuxCNC's rs274 not found; run scripts/deps.sh", file=sys.stderr)
