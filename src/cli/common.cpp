@@ -15,6 +15,10 @@ namespace nckit::cli {
 void add_machine_options(CLI::App& verb, MachineOptions& options) {
     verb.add_option("--machine", options.machine, "machine config (TOML); default: built-in 3-axis mill");
     verb.add_option("--library", options.library, "folder of called programs, one file per O number");
+    verb.add_option("--dialect", options.dialect,
+                    "G-code dialect: fanuc (with Macro B) or linuxcnc (RS-274/NGC with O-words); default: the "
+                    "machine file's, else fanuc")
+        ->check(CLI::IsMember({"fanuc", "linuxcnc"}));
     verb.add_option("--tools", options.tools,
                     "tool file: TOML or LinuxCNC tool.tbl (replaces the machine file's 'tools')");
     verb.add_option("--vars", options.vars,
@@ -152,6 +156,7 @@ std::optional<Interpreter> open_program_or_report(const std::string& program_pat
         return std::nullopt;
     }
     default_machine_in_use = options.machine.empty();
+    if (!options.dialect.empty()) machine->dialect = options.dialect == "linuxcnc" ? Dialect::linuxcnc : Dialect::fanuc;
     if (!options.tools.empty()) {
         auto tools = load_tool_table(options.tools);
         if (!tools) {
@@ -169,13 +174,15 @@ std::optional<Interpreter> open_program_or_report(const std::string& program_pat
     InterpreterOptions interpreter;
     interpreter.block_delete = options.block_delete;
     interpreter.library_dir = options.library;
+    interpreter.subroutine_path = machine->subroutine_path;
     interpreter.max_blocks = options.max_blocks;
     interpreter.save_retained = keep_retained;
     interpreter.keep_going_after_errors = options.keep_going;
     interpreter.on_warning = [](const Diagnostic& warning) { print_diagnostic(warning); };
     if (!options.vars.empty()) {
         interpreter.retained_file = options.vars;
-    } else if (!options.machine.empty()) {
+    } else if (!options.machine.empty() && machine->dialect == Dialect::fanuc) {
+        // (A LinuxCNC parameter file is read and written only when --vars names it.)
         // Retained variables live beside the machine they belong to, as in a control's memory.
         interpreter.retained_file = std::filesystem::path(options.machine).replace_extension(".vars");
     }

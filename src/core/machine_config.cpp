@@ -65,6 +65,22 @@ void read_tools(TableReader& reader, MachineConfig& config, ConfigSink& sink) {
     config.tools_file = path.string();
 }
 
+//! `subroutine_path = ["DIR", ...]`: folders named relative to the machine file.
+void read_subroutine_path(TableReader& reader, MachineConfig& config, ConfigSink& sink) {
+    const toml::array* dirs = reader.array("subroutine_path", Need::optional);
+    if (dirs == nullptr) return;
+    for (const toml::node& dir : *dirs) {
+        const auto* text = dir.as_string();
+        if (text == nullptr || text->get().empty()) {
+            sink.error(dir.source(), "config-value", "each entry of 'subroutine_path' must be a folder name");
+            continue;
+        }
+        std::filesystem::path path(text->get());
+        if (path.is_relative() && sink.file) path = std::filesystem::path(*sink.file).parent_path() / path;
+        config.subroutine_path.push_back(path);
+    }
+}
+
 void read_machine(const toml::table& table, MachineConfig& config, ConfigSink& sink) {
     TableReader reader(table, "[machine]", sink);
     if (std::optional<std::string> name = reader.text("name", Need::required)) {
@@ -118,6 +134,11 @@ void read_machine(const toml::table& table, MachineConfig& config, ConfigSink& s
         config.startup_gcodes = *codes;
         config.startup_gcodes_at = sink.at(reader.region_of("startup_gcodes"));
     }
+    constexpr std::array dialects{Dialect::fanuc, Dialect::linuxcnc};
+    if (auto i = reader.choice("dialect", Need::optional, "dialect", {"fanuc", "linuxcnc"})) {
+        config.dialect = dialects[*i];
+    }
+    read_subroutine_path(reader, config, sink);
     constexpr std::array profiles{ProfileKind::scurve, ProfileKind::trapezoid};
     if (auto i = reader.choice("profile", Need::optional, "profile", {"scurve", "trapezoid"})) {
         config.profile = profiles[*i];

@@ -1,23 +1,33 @@
 #include "nckit/interp/interpreter.hpp"
 
+#include "linuxcnc/ngc_runner.hpp"
 #include "program_runner.hpp"
 
 namespace nckit {
 
 struct Interpreter::State {
-    State(MachineConfig m, ProgramSource s, InterpreterOptions o)
-        : machine(std::move(m)), options(std::move(o)), runner(machine, std::move(s), options) {}
+    State(MachineConfig m, ProgramSource s, InterpreterOptions o) : machine(std::move(m)), options(std::move(o)) {
+        if (machine.dialect == Dialect::linuxcnc) {
+            ngc.emplace(machine, std::move(s), options);
+        } else {
+            runner.emplace(machine, std::move(s), options);
+        }
+    }
 
     MachineConfig machine;
     InterpreterOptions options;
-    interp::ProgramRunner runner;
+    std::optional<interp::ProgramRunner> runner;  // Fanuc with Macro B
+    std::optional<interp::ngc::NgcRunner> ngc;    // LinuxCNC's RS-274/NGC
+
+    std::optional<InterpResult> fill(std::vector<Move>& out) { return ngc ? ngc->fill(out) : runner->fill(out); }
+    [[nodiscard]] bool recoverable() const { return ngc ? ngc->error_is_recoverable() : runner->error_is_recoverable(); }
     std::vector<Move> pending;
     std::size_t next_pending = 0;
     std::optional<InterpResult> finished;  // ProgramEnd or Diagnostic, repeated once reached
 
     //! The run is over: keep #500-#999, as a control does whatever stopped the program.
     void finish(InterpResult result) {
-        if (auto error = runner.save_retained(); error && std::holds_alternative<ProgramEnd>(result)) {
+        if (auto error = ngc ? ngc->save_parameters() : runner->save_retained(); error && std::holds_alternative<ProgramEnd>(result)) {
             result = std::move(*error);
         }
         finished = std::move(result);
@@ -32,8 +42,12 @@ Interpreter::~Interpreter() = default;
 
 const MachineConfig& Interpreter::machine() const { return state_->machine; }
 
-ModalView Interpreter::modal_view() const { return state_->runner.modal_view(); }
-std::uint64_t Interpreter::main_program_offset() const { return state_->runner.main_program_offset(); }
+ModalView Interpreter::modal_view() const {
+    return state_->ngc ? state_->ngc->modal_view() : state_->runner->modal_view();
+}
+std::uint64_t Interpreter::main_program_offset() const {
+    return state_->ngc ? state_->ngc->main_program_offset() : state_->runner->main_program_offset();
+}
 
 InterpResult Interpreter::next() {
     State& s = *state_;
@@ -42,8 +56,8 @@ InterpResult Interpreter::next() {
         s.pending.clear();
         s.next_pending = 0;
         // The moves of the block that ended the program still go out before the end.
-        if (auto stop = s.runner.fill(s.pending)) {
-            if (s.options.keep_going_after_errors && s.runner.error_is_recoverable() &&
+        if (auto stop = s.fill(s.pending)) {
+            if (s.options.keep_going_after_errors && s.recoverable() &&
                 std::holds_alternative<Diagnostic>(*stop)) {
                 s.pending.clear();  // the block in error moves nothing
                 return std::move(*stop);

@@ -86,9 +86,18 @@ enum class CompStartup {
 //! A Fanuc lathe's G-code system (docs/gcode-lathe.md has the table). `none`: the mill codes
 //! (and LinuxCNC's lathe codes), as for every machine without the key.
 enum class GCodeSystem { none, a, b, c };
+//! Which G-code dialect programs are read in (docs/gcode-linuxcnc.md lists the differences).
+enum class Dialect {
+    fanuc,    //!< Fanuc with Custom Macro B (the default)
+    linuxcnc  //!< LinuxCNC's RS-274/NGC: O-word subroutines and control flow, named parameters
+};
 
 struct MachineConfig {
     std::string name;
+    Dialect dialect = Dialect::fanuc;  //!< `dialect = "linuxcnc"`; `--dialect` overrides it
+    //! `subroutine_path = ["DIR", ...]`: where a LinuxCNC `o<name> call` finds NAME.ngc (after
+    //! `--library`), relative to the machine file.
+    std::vector<std::filesystem::path> subroutine_path;
     double servo_period_s = 0.001;  //!< s, trajectory sampling period
     bool diameter_mode = false;     //!< lathe: X words are diameters, Moves carry radii
     std::vector<int> exact_stop_mcodes;  //!< M-codes that need the axes at rest

@@ -4,6 +4,7 @@
 #include <functional>
 #include <memory>
 #include <variant>
+#include <vector>
 
 #include "nckit/core/diagnostic.hpp"
 #include "nckit/core/machine.hpp"
@@ -27,10 +28,14 @@ struct InterpreterOptions {
     //! Where M98/G65 find programs that are not in the program's own file: one file per program,
     //! named by its number (`O1234.nc`, `1234.ngc`, `O1234`), as in a control's memory.
     std::filesystem::path library_dir;
+    //! LinuxCNC dialect: further folders where `o<name> call` finds NAME.ngc (after library_dir,
+    //! before the main program's own folder); the machine file's `subroutine_path`.
+    std::vector<std::filesystem::path> subroutine_path;
     //! Blocks a program may execute inside loops, after a jump back or in called programs before
     //! it is stopped as a runaway (alarm 100). A program without jumps is bounded by its length.
     std::int64_t max_blocks = 10'000'000;
-    //! File that keeps #500-#999 between runs; empty: they start vacant and are not kept.
+    //! File that keeps #500-#999 between runs; empty: they start vacant and are not kept. In the
+    //! LinuxCNC dialect: its parameter file (`NUMBER<tab>VALUE` lines, like LinuxCNC's .var).
     std::filesystem::path retained_file;
     //! Write changed #500-#999 back at the end of the run (a check reads them but keeps none).
     bool save_retained = true;

@@ -1,0 +1,266 @@
+#include "ngc_runner.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "ngc_evaluate.hpp"
+
+namespace nckit::interp::ngc {
+
+namespace {
+
+//! A staged parameter setting: LinuxCNC applies a line's settings together, after reading it.
+struct Staged {
+    std::int64_t number = 0;  // 0: named
+    std::string name;
+    double value = 0;
+    std::uint32_t column = 0;
+};
+
+bool has_g(const Block& block, double code) {
+    for (const Word& w : block.words) {
+        if (w.letter == 'G' && std::abs(w.value - code) < 1e-9) return true;
+    }
+    return false;
+}
+
+Word* find_word(Block& block, char letter) {
+    for (Word& w : block.words) {
+        if (w.letter == letter) return &w;
+    }
+    return nullptr;
+}
+
+}  // namespace
+
+NgcRunner::NgcRunner(const MachineConfig& machine, ProgramSource main, const InterpreterOptions& options)
+    : machine_(machine), options_(options), executor_(machine, options_) {
+    main_file_ = *main.file();
+    auto reader = std::make_unique<ProgramSource>(std::move(main));
+    current_ = reader.get();
+    files_.emplace(main_file_, std::move(reader));
+    frames_.push_back(Frame{});
+    connect_live_parameters();
+    if (auto error = load_parameter_file()) startup_error_ = std::move(error);
+}
+
+Diagnostic NgcRunner::fail(std::uint32_t column, std::string message) const {
+    return error_at(line_.at(column), "ngc-error", std::move(message));
+}
+
+std::optional<Diagnostic> NgcRunner::switch_to(const std::string& file, std::uint64_t offset, std::uint32_t line) {
+    auto it = files_.find(file);
+    if (it == files_.end()) {
+        auto opened = ProgramSource::open(file);
+        if (!opened) return opened.diagnostics().front();
+        it = files_.emplace(file, std::make_unique<ProgramSource>(std::move(opened).value())).first;
+    }
+    current_ = it->second.get();
+    current_->seek(offset, line);
+    return std::nullopt;
+}
+
+std::optional<InterpResult> NgcRunner::fill(std::vector<Move>& pending) {
+    if (startup_error_) return InterpResult(*startup_error_);
+    error_is_recoverable_ = false;
+    while (pending.empty()) {
+        if (auto result = run_line(pending)) return result;
+    }
+    return std::nullopt;
+}
+
+std::optional<InterpResult> NgcRunner::run_line(std::vector<Move>& pending) {
+    auto next = source().next();
+    if (!next) return InterpResult(next.diagnostics().front());
+    const bool in_main = *source().file() == main_file_;
+    if (!next.value()) {
+        line_.location = make_location(source().file(), source().next_line_number() - 1, 1);
+        if (skipping_to_sub_) {
+            Diagnostic d = error_at(call_location_, "ngc-error",
+                                    fmt::format("subroutine o<{}> not found: not defined before the call, not after "
+                                                "it in this file, and no file {}.ngc in the library folders",
+                                                skipping_o_, skipping_o_));
+            return InterpResult(std::move(d));
+        }
+        if (!skipping_o_.empty()) {
+            return InterpResult(fail(1, fmt::format("file ended while looking for o<{}>: its {} is missing",
+                                                    skipping_o_, skipping_to_sub_ ? "sub" : "closing O-word")));
+        }
+        if (frames_.size() > 1) {
+            return InterpResult(fail(1, fmt::format("file ended inside o<{}>: endsub missing", frames_.back().sub)));
+        }
+        return InterpResult(fail(1, seen_percent_ ? "file ended with no percent sign"
+                                                  : "file ended with no percent sign or program end (M2 or M30)"));
+    }
+    const ProgramSource::Line& text = **next;
+    if (in_main && frames_.size() == 1) main_offset_ = source().next_offset();
+    if (frames_.size() > 1 || repeating_) {
+        if (++counted_lines_ > options_.max_blocks) {
+            line_.location = make_location(source().file(), text.number, 1);
+            return InterpResult(fail(1, fmt::format("more than {} lines run in loops and calls: a runaway program? "
+                                                    "(raise the budget with --max-blocks)",
+                                                    options_.max_blocks)));
+        }
+    }
+    line_.location = make_location(source().file(), text.number, 1);
+    line_offset_ = text.offset;
+    if (auto error = parse_ngc_line(text.text, line_)) {
+        // Skipped lines are not read beyond their O-word, as in LinuxCNC.
+        if (!skipping_o_.empty() && line_.oword.column == 0) return std::nullopt;
+        error_is_recoverable_ = frames_.size() == 1 && skipping_o_.empty();
+        return InterpResult(std::move(*error));
+    }
+    if (line_.percent) {
+        if (!seen_line_ && !seen_percent_) {
+            seen_percent_ = true;
+            return std::nullopt;
+        }
+        if (auto error = executor_.end_program(pending)) return InterpResult(std::move(*error));
+        return InterpResult(ProgramEnd{});
+    }
+    if (line_.block_delete && options_.block_delete) return std::nullopt;
+    if (line_.empty()) return std::nullopt;
+    seen_line_ = true;
+    if (line_.oword.kind != OKind::none) {
+        if (auto error = run_oword()) return InterpResult(std::move(*error));
+        return std::nullopt;
+    }
+    if (!skipping_o_.empty()) return std::nullopt;
+    auto result = run_ordinary(pending);
+    if (result && std::holds_alternative<Diagnostic>(*result)) error_is_recoverable_ = frames_.size() == 1;
+    return result;
+}
+
+std::optional<InterpResult> NgcRunner::run_ordinary(std::vector<Move>& pending) {
+    std::vector<Staged> staged;
+    for (const Setting& s : line_.settings) {
+        Staged out;
+        out.column = s.column;
+        const Node& target = line_.nodes[static_cast<std::size_t>(s.target)];
+        if (target.op == Op::named) {
+            out.name = line_.names[static_cast<std::size_t>(target.name)];
+        } else if (auto error = parameter_number(line_, s.target, parameters_, out.number)) {
+            return InterpResult(std::move(*error));
+        }
+        if (auto error = evaluate(line_, s.value, parameters_, out.value)) return InterpResult(std::move(*error));
+        staged.push_back(std::move(out));
+    }
+    if (auto error = resolve_block()) return InterpResult(std::move(*error));
+    if (auto error = comments()) return InterpResult(std::move(*error));
+    for (const Staged& s : staged) {
+        if (s.number != 0) {
+            parameters_.write(s.number, s.value);
+        } else if (!parameters_.write_named(s.name, s.value)) {
+            return InterpResult(fail(s.column, fmt::format("cannot assign to read-only parameter #<{}>", s.name)));
+        }
+    }
+    if (block_.words.empty()) return std::nullopt;
+    if (auto error = translate_block()) return InterpResult(std::move(*error));
+    bool program_end = false;
+    if (auto error = executor_.run(block_, pending, program_end)) return InterpResult(std::move(*error));
+    if (program_end) return InterpResult(ProgramEnd{});
+    return std::nullopt;
+}
+
+std::optional<Diagnostic> NgcRunner::resolve_block() {
+    block_.clear();
+    block_.location = line_.location;
+    for (const NgcWord& w : line_.words) {
+        double value = 0;
+        if (auto error = evaluate(line_, w.expr, parameters_, value)) return error;
+        if (w.letter == 'G') {
+            // G codes are read to a tenth: G38.2 is 382 tenths; G1.23 is no code.
+            double tenths = std::round(value * 10.0);
+            if (std::abs(value * 10.0 - tenths) > 1e-4) {
+                return fail(w.column, fmt::format("G{} is no G code (G codes are read to a tenth)", value));
+            }
+            value = tenths / 10.0;
+        }
+        block_.words.push_back(Word{w.letter, value, true, w.column, -1});
+    }
+    return std::nullopt;
+}
+
+std::optional<Diagnostic> NgcRunner::translate_block() {
+    // G4 P and a drilling cycle's P are seconds in LinuxCNC; the Executor reads Fanuc's
+    // milliseconds for P and seconds for G4 X.
+    Word* p = find_word(block_, 'P');
+    const bool dwell = has_g(block_, 4);
+    int m_io = 0;
+    for (const Word& w : block_.words) {
+        if (w.letter == 'M' && ((w.value >= 50 && w.value <= 53) || (w.value >= 61 && w.value <= 68))) {
+            m_io = static_cast<int>(w.value);
+        }
+    }
+    if (m_io != 0) {
+        // Override switches (M50-M53 P), M61 Q (set the loaded tool), digital and analog I/O
+        // (M62-M65 P, M66 P E L Q, M67/M68 E Q): events without motion; their pin, value and
+        // wait words are LinuxCNC's and have no meaning for the planner.
+        std::erase_if(block_.words, [](const Word& w) {
+            return w.letter == 'P' || w.letter == 'E' || w.letter == 'L' || w.letter == 'Q';
+        });
+        p = nullptr;
+    }
+    if (p != nullptr && dwell) {
+        p->letter = 'X';
+    } else if (p != nullptr && !has_g(block_, 10) && !has_g(block_, 64)) {
+        bool cycle = false;
+        for (double code : {82.0, 86.0, 88.0, 89.0}) cycle = cycle || has_g(block_, code);
+        int modal = executor_.modal_view().motion_code;
+        cycle = cycle || modal == 820 || modal == 860 || modal == 880 || modal == 890;
+        if (cycle) p->value *= 1000.0;
+    }
+    if (has_g(block_, 43) && find_word(block_, 'H') == nullptr) {
+        // LinuxCNC's G43 without H takes the loaded tool's length.
+        std::uint32_t column = 1;
+        for (const Word& w : block_.words) {
+            if (w.letter == 'G' && w.value == 43) column = w.column;
+        }
+        block_.words.push_back(Word{'H', static_cast<double>(executor_.modal_view().tool), true, column, -1});
+    }
+    for (Word& w : block_.words) {
+        if (w.letter == 'G' && std::abs(w.value - 61.1) < 1e-9) w.value = 61;  // exact path: as G61 here
+    }
+    add_motion_to_here();
+    return std::nullopt;
+}
+
+void NgcRunner::add_motion_to_here() {
+    // LinuxCNC moves to where it is when a block names G0 or G1 without an axis word (`G0 S1000`,
+    // `G1 F100`): a zero-length move, which ends blending there. The Executor moves only for axis
+    // words, so the block gets the current X.
+    const Word* motion = nullptr;
+    for (const Word& w : block_.words) {
+        if (w.letter == 'G' && (w.value == 0 || w.value == 1)) motion = &w;
+        if (w.letter == 'G' && (w.value == 4 || w.value == 10 || w.value == 28 || w.value == 30 || w.value == 52 ||
+                                w.value == 53 || w.value == 92)) {
+            return;  // those take axis words for themselves
+        }
+        if (axis_from_letter(w.letter).has_value()) return;
+    }
+    if (motion == nullptr || machine_.axes.empty()) return;
+    const char axis_char = letter(machine_.axes.front().axis);
+    const bool incremental = executor_.modal_view().incremental;
+    const double here = incremental ? 0.0 : axis_position(axis_char).value_or(0.0);
+    block_.words.push_back(Word{axis_char, here, true, motion->column, -1});
+}
+
+std::optional<Diagnostic> NgcRunner::comments() {
+    for (const Comment& c : line_.comments) {
+        if (c.kind == CommentKind::plain) continue;
+        std::string text = c.text;
+        if (c.kind == CommentKind::print || c.kind == CommentKind::debug || c.kind == CommentKind::abort) {
+            text = substitute_parameters(text);
+        }
+        if (c.kind == CommentKind::abort) return fail(c.column, fmt::format("abort: {}", text));
+        if (options_.on_warning) {
+            Diagnostic note = error_at(line_.at(c.column), c.kind == CommentKind::msg ? "ngc-msg" : "ngc-print", text);
+            note.severity = Severity::note;
+            options_.on_warning(note);
+        }
+    }
+    return std::nullopt;
+}
+
+}  // namespace nckit::interp::ngc

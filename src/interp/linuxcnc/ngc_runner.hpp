@@ -1,0 +1,116 @@
+#pragma once
+// Runs a LinuxCNC RS-274/NGC program: reads its lines, follows O-word subroutines and control
+// flow the way LinuxCNC's interpreter does (labels found by name as the file is read, skipping
+// forward to a label, seeking back to a recorded one), keeps its parameters, and hands each
+// ordinary line, with its values known, to the Executor that nckit's Fanuc reader uses too.
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "../executor.hpp"
+#include "ngc_line.hpp"
+#include "ngc_parameters.hpp"
+#include "nckit/interp/interpreter.hpp"
+
+namespace nckit::interp::ngc {
+
+class NgcRunner {
+public:
+    NgcRunner(const MachineConfig& machine, ProgramSource main, const InterpreterOptions& options);
+
+    //! Runs lines until moves are queued in `pending`, the program ends, or an error stops it.
+    [[nodiscard]] std::optional<InterpResult> fill(std::vector<Move>& pending);
+    //! Writes the parameter file back when one is configured and saving is asked for.
+    [[nodiscard]] std::optional<Diagnostic> save_parameters() const;
+    [[nodiscard]] bool error_is_recoverable() const { return error_is_recoverable_; }
+    [[nodiscard]] std::uint64_t main_program_offset() const { return main_offset_; }
+    [[nodiscard]] ModalView modal_view() const { return executor_.modal_view(); }
+
+private:
+    //! Where an O-word label was seen (LinuxCNC's offset table).
+    struct Label {
+        OKind kind = OKind::none;
+        std::string file;
+        std::uint64_t offset = 0;
+        std::uint32_t line = 0;
+        int repeat_count = -1;
+    };
+    //! One level of O-word calls; [0] is the main program.
+    struct Frame {
+        std::string sub;              //!< the called sub's label; empty for the main program
+        std::string return_file;
+        std::uint64_t return_offset = 0;
+        std::uint32_t return_line = 0;
+    };
+
+    // ngc_runner.cpp: reading lines and running ordinary ones.
+    std::optional<InterpResult> run_line(std::vector<Move>& pending);
+    std::optional<InterpResult> run_ordinary(std::vector<Move>& pending);
+    std::optional<Diagnostic> resolve_block();
+    std::optional<Diagnostic> translate_block();
+    std::optional<Diagnostic> comments();
+    void add_motion_to_here();
+    [[nodiscard]] Diagnostic fail(std::uint32_t column, std::string message) const;
+    [[nodiscard]] ProgramSource& source() { return *current_; }
+    std::optional<Diagnostic> switch_to(const std::string& file, std::uint64_t offset, std::uint32_t line);
+
+    // ngc_control.cpp: O-words.
+    std::optional<Diagnostic> run_oword();
+    std::optional<Diagnostic> call_sub(const std::string& name);
+    std::optional<Diagnostic> return_from_sub();
+    std::optional<Diagnostic> back_to(const std::string& name);
+    std::optional<Diagnostic> save_label(const std::string& name);
+    std::optional<Diagnostic> check_label(const std::string& name, std::initializer_list<OKind> kinds, Label*& out);
+    [[nodiscard]] std::string full_name() const;
+    [[nodiscard]] std::optional<std::filesystem::path> find_sub_file(const std::string& name) const;
+    std::optional<Diagnostic> condition(double& value);
+
+    // ngc_state.cpp: parameters LinuxCNC keeps current, and its parameter file.
+    void connect_live_parameters();
+    [[nodiscard]] std::optional<double> live_numbered(std::int64_t n) const;
+    [[nodiscard]] std::optional<double> live_named(const std::string& name) const;
+    std::optional<Diagnostic> load_parameter_file();
+    [[nodiscard]] double to_program_units(double mm) const;
+    //! `#123` and `#<name>` in a (print,...) or (debug,...) text replaced by their values.
+    [[nodiscard]] std::string substitute_parameters(const std::string& text) const;
+    [[nodiscard]] std::optional<double> axis_position(char letter) const;
+
+    const MachineConfig& machine_;
+    InterpreterOptions options_;
+    Executor executor_;
+    NgcParameters parameters_;
+    std::map<std::string, std::unique_ptr<ProgramSource>> files_;
+    ProgramSource* current_ = nullptr;
+    std::string main_file_;
+    std::unordered_map<std::string, Label> labels_;
+    std::vector<Frame> frames_;
+    std::optional<Diagnostic> startup_error_;
+
+    NgcLine line_;
+    Block block_;
+    std::uint64_t line_offset_ = 0;
+    std::uint64_t main_offset_ = 0;
+    std::int64_t counted_lines_ = 0;
+    std::set<std::int64_t> in_file_;  //!< numbers the parameter file had: written back
+    bool repeating_ = false;  //!< a loop or call has run: lines count against the budget
+    SourceLocation call_location_;  //!< the call a forward search for its sub started from
+
+    // LinuxCNC's skipping state.
+    std::string skipping_o_;        //!< skipping forward to this label; empty: not skipping
+    bool skipping_to_sub_ = false;  //!< ... to its `sub` line, for a call
+    bool defining_sub_ = false;     //!< passing over a sub's definition in the main program
+    std::string sub_name_;          //!< the sub being defined
+    bool executed_if_ = false;
+    bool doing_break_ = false;
+    bool doing_continue_ = false;
+    bool seen_percent_ = false;
+    bool seen_line_ = false;
+    bool error_is_recoverable_ = false;
+};
+
+}  // namespace nckit::interp::ngc
