@@ -137,7 +137,9 @@ void ProgramSource::seek(std::uint64_t offset, std::uint32_t line_number) {
         begin_ = static_cast<std::size_t>(offset);
         return;
     }
-    if (offset >= buffer_offset_ && offset < buffer_offset_ + end_) {
+    // Inside the buffer, or at its end when nothing follows (a loop back to the last line of a
+    // file must not cost a read of the file per pass).
+    if (offset >= buffer_offset_ && (offset < buffer_offset_ + end_ || (eof_ && offset == buffer_offset_ + end_))) {
         begin_ = static_cast<std::size_t>(offset - buffer_offset_);
         return;
     }
