@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets (preset "fuzz": clang, ASan + UBSan) and runs each for SECONDS
 # (default 30) on its seed corpus and dictionary. Exits non-zero on any finding (crash, leak,
-# sanitizer report, timeout); prints executions per target. Usage: fuzz/run_all.sh [SECONDS]
+# sanitizer report, timeout); prints executions per target.
+# Usage: fuzz/run_all.sh [SECONDS [TARGET...]] (default: every target)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-30}
+only=("${@:2}")
 cmake --preset fuzz >/dev/null
 cmake --build --preset fuzz -j "${JOBS:-2}"
 
@@ -17,24 +19,32 @@ targets=(
   "fuzz_jobs:examples/crosshatch examples/eccentric examples/piston:fuzz/toml.dict"
   "fuzz_notch:examples/notch:fuzz/gcode.dict"
   "fuzz_planner::"
+  "fuzz_tools:fuzz/seeds/tools tests/programs tests/cutter_comp examples/linuxcnc:fuzz/toml.dict"
 )
 status=0
 printf '%-14s %12s %10s %s\n' target executions exec/s result
 for entry in "${targets[@]}"; do
   IFS=: read -r name seeds dict <<<"$entry"
+  if ((${#only[@]})) && [[ " ${only[*]} " != *" $name "* ]]; then continue; fi
   corpus="$work/$name.corpus"
   mkdir -p "$corpus" "$work/$name.findings"
   # Seeds: the repository's own programs and files (copied, so the tree is never changed). The
-  # job target's first byte picks the kind: each job file is seeded under every kind.
+  # job target's first byte picks the kind: each job file is seeded under every kind; the tool
+  # target's picks the reader (0: TOML, 1: tool.tbl in mm, 3: tool.tbl in inch).
   for folder in $seeds; do
     while IFS= read -r -d '' file; do
       base=$(basename "$file")
       if [[ $name == fuzz_jobs ]]; then
         for kind in 0 1 2; do { printf "\\x3$kind"; cat "$file"; } >"$corpus/$kind-$base"; done
+      elif [[ $name == fuzz_tools ]]; then
+        if [[ $base == *.toml ]]; then { printf '\x30'; cat "$file"; } >"$corpus/$base"; fi
+        if [[ $base == *.tbl ]]; then
+          for kind in 1 3; do { printf "\\x3$kind"; cat "$file"; } >"$corpus/$kind-$base"; done
+        fi
       else
         cp "$file" "$corpus/$base"
       fi
-    done < <(find "$folder" -maxdepth 2 -type f \( -name '*.ngc' -o -name '*.nc' -o -name '*.toml' \) -size -64k -print0)
+    done < <(find "$folder" -maxdepth 2 -type f \( -name '*.ngc' -o -name '*.nc' -o -name '*.toml' -o -name '*.tbl' \) -size -64k -print0)
   done
   args=(-max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1
         -artifact_prefix="$work/$name.findings/")

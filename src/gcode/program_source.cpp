@@ -21,6 +21,7 @@ Result<ProgramSource> ProgramSource::open(const std::filesystem::path& path) {
     if (path == "-") {
         // Standard input, read as any pipe: streamed once, never searched backwards.
         source.name_ = std::make_shared<const std::string>("<stdin>");
+        source.rereadable_ = false;
         int fd = ::dup(STDIN_FILENO);
         source.file_ = fd >= 0 ? ::fdopen(fd, "rb") : nullptr;
         if (source.file_ == nullptr) {
@@ -41,6 +42,7 @@ Result<ProgramSource> ProgramSource::open(const std::filesystem::path& path) {
         return error_at(make_location(source.name_, 0, 0), "file",
                         fmt::format("cannot open: {}", std::strerror(errno)));
     }
+    source.rereadable_ = std::filesystem::is_regular_file(path, ec);
     source.text_.resize(buffer_bytes);
     return source;
 }
@@ -67,6 +69,7 @@ ProgramSource& ProgramSource::operator=(ProgramSource&& other) noexcept {
         buffer_offset_ = other.buffer_offset_;
         line_number_ = other.line_number_;
         eof_ = other.eof_;
+        rereadable_ = other.rereadable_;
         line_ = std::move(other.line_);
     }
     return *this;
@@ -134,7 +137,9 @@ void ProgramSource::seek(std::uint64_t offset, std::uint32_t line_number) {
         begin_ = static_cast<std::size_t>(offset);
         return;
     }
-    if (offset >= buffer_offset_ && offset < buffer_offset_ + end_) {
+    // Inside the buffer, or at its end when nothing follows (a loop back to the last line of a
+    // file must not cost a read of the file per pass).
+    if (offset >= buffer_offset_ && (offset < buffer_offset_ + end_ || (eof_ && offset == buffer_offset_ + end_))) {
         begin_ = static_cast<std::size_t>(offset - buffer_offset_);
         return;
     }

@@ -125,6 +125,8 @@ private:
 
     // Drilling cycles (executor_cycles.cpp).
     std::optional<Diagnostic> check_cycle_words() const;
+    //! Warns (once) of an arc too small to be meant in mm: a program in inches without G20.
+    void warn_if_implausibly_small(const Arc& arc);
     std::optional<Diagnostic> drill(std::vector<Move>& out);
     std::optional<Diagnostic> drill_hole(const struct HolePlan& hole, std::vector<Move>& out);
 
@@ -179,6 +181,7 @@ private:
     int last_mcode_ = 0;            //!< #4113
     double parts_done_ = 0;         //!< #3901, counted at M2/M30
     double parts_required_ = 0;     //!< #3902
+    bool warned_small_arc_ = false; //!< the implausible-size warning is given once a run
 };
 
 }  // namespace nckit::interp

@@ -164,6 +164,23 @@ std::optional<Diagnostic> Executor::sync(const AxisVector& target, std::vector<M
     return std::nullopt;
 }
 
+void Executor::warn_if_implausibly_small(const Arc& arc) {
+    // A circle under 0.2 mm across is no bore or pocket a mill cuts: most often an inch program
+    // read in mm (G20 missing; a 0.092 in bore is 2.34 mm). A warning, once a run: it still runs.
+    constexpr double smallest_plausible_diameter_mm = 0.2;
+    const double diameter_mm = 2.0 * arc_start_radius(arc);
+    if (warned_small_arc_ || inch_units() || !options_.on_warning || !(diameter_mm < smallest_plausible_diameter_mm)) {
+        return;
+    }
+    warned_small_arc_ = true;
+    Diagnostic warning = error(motion_column(), "implausible-size",
+                               fmt::format("an arc of {:.4g} mm diameter: implausibly small for a cut; is the program "
+                                           "in inches (G20 missing)?",
+                                           diameter_mm));
+    warning.severity = Severity::warning;
+    options_.on_warning(warning);
+}
+
 std::optional<Diagnostic> Executor::arc(GCode motion, const AxisVector& target, std::vector<Move>& out) {
     Arc arc;
     arc.from = position_;
@@ -232,6 +249,7 @@ std::optional<Diagnostic> Executor::arc(GCode motion, const AxisVector& target, 
     }
     AxisBox box = arc_bounds(arc);
     if (auto e = check_travel(box.low, box.high)) return e;
+    warn_if_implausibly_small(arc);
     push(out, arc);
     position_ = target;
     return std::nullopt;

@@ -2,12 +2,16 @@
 // Runs a program's blocks in the order Custom Macro B gives them: statements (assignments, IF,
 // GOTO, WHILE/DO/END), calls (G65, G66/G67, M98, M99) and the NC blocks, which it hands to the
 // Executor after evaluating their expressions.
+#include <map>
 #include <memory>
 #include <optional>
+#include <string>
+#include <utility>
 #include <unordered_map>
 #include <vector>
 
 #include "executor.hpp"
+#include "sequence_index.hpp"
 #include "macro/evaluate.hpp"
 #include "macro/program_library.hpp"
 #include "macro/variables.hpp"
@@ -68,6 +72,12 @@ private:
     std::optional<Diagnostic> run_statement(const Block& block);
     std::optional<Diagnostic> assign(const Block& block);
     std::optional<Diagnostic> jump_to_sequence(const Block& block, std::uint32_t column, std::int64_t number);
+    //! The index of the running program's sequence numbers, read on its first GOTO: once per
+    //! program and run, so its cost is that of reading the program once and is not counted
+    //! against the runaway budget (each jump is a block, counted after a jump back). Null when
+    //! the program cannot be read twice or numbers too many lines: GOTO then searches line by
+    //! line, and every line searched counts against the budget.
+    const SequenceIndex* sequence_index();
     std::optional<Diagnostic> start_loop(const Block& block, bool condition_holds);
     std::optional<Diagnostic> end_loop(const Block& block);
     std::optional<Diagnostic> skip_past_end(const Block& block, int loop);
@@ -129,6 +139,8 @@ private:
     const Block* cached_block();
     const Block* remember(const Block& block);
     std::unordered_map<CacheKey, CachedBlock, CacheKeyHash> block_cache_;
+    //! By file and the offset where the program starts; nullopt: too many numbered lines.
+    std::map<std::pair<std::string, std::uint64_t>, std::optional<SequenceIndex>> sequence_indexes_;
     const Block* current_block_ = nullptr;  // the block being run (for #3000's message)
 
     Block block_;            // the block being read

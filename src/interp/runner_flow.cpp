@@ -153,13 +153,91 @@ std::optional<Diagnostic> ProgramRunner::skip_past_end(const Block& block, int l
     }
 }
 
+const SequenceIndex* ProgramRunner::sequence_index() {
+    ProgramSource& src = source();
+    if (!src.rereadable()) return nullptr;
+    const Frame& f = frame();
+    auto key = std::make_pair(*src.file(), f.program.offset);
+    if (auto known = sequence_indexes_.find(key); known != sequence_indexes_.end()) {
+        return known->second ? &*known->second : nullptr;
+    }
+    const std::uint64_t here = src.next_offset();
+    const std::uint32_t here_line = src.next_line_number();
+    src.seek(f.program.offset, f.program.line);
+    SequenceIndex index;
+    bool too_many = false;
+    bool seen_block = false;  // a leading '%' and the O line are the program's header
+    for (;;) {
+        auto line = src.next();
+        if (!line || !line.value()) break;
+        const ProgramSource::Line& text = **line;
+        if (program_number_of(text.text)) {
+            if (seen_block) break;  // the next program
+            continue;
+        }
+        if (const auto n = sequence_number_of(text.text)) {
+            if (index.full()) {
+                too_many = true;
+                break;
+            }
+            index.add_number(*n, text.offset, text.number);
+            seen_block = true;
+        }
+        scan_.location = make_location(src.file(), text.number, 1);
+        if (!parse_block(text.text, scan_)) {
+            if (scan_.tape_mark) {
+                if (seen_block) break;
+                continue;
+            }
+            if (scan_.statement.kind == StatementKind::end_loop) index.add_loop_end(scan_.statement.loop, text.offset);
+            if (!scan_.words.empty() || scan_.statement.kind != StatementKind::none) seen_block = true;
+        }
+    }
+    src.seek(here, here_line);
+    if (too_many) {
+        sequence_indexes_.emplace(std::move(key), std::nullopt);
+        return nullptr;
+    }
+    index.seal();
+    auto placed = sequence_indexes_.emplace(std::move(key), std::move(index));
+    return &*placed.first->second;
+}
+
 std::optional<Diagnostic> ProgramRunner::jump_to_sequence(const Block& block, std::uint32_t column,
                                                           std::int64_t number) {
     Frame& f = frame();
     ProgramSource& src = source();
     const std::uint64_t here = src.next_offset();
     const std::uint32_t here_line = src.next_line_number();
-    // Forward from here to the end of this program, then from its start back to here.
+    auto runaway = [&] {
+        src.seek(here, here_line);
+        return alarm_at(block, column, alarm::too_many_blocks,
+                        fmt::format("more than {} blocks run or searched in loops, jumps and calls: a runaway "
+                                    "program? (raise the budget with --max-blocks)",
+                                    options_.max_blocks));
+    };
+    if (const SequenceIndex* index = sequence_index()) {
+        const std::optional<SequenceIndex::Target> target = index->find(number, here);
+        if (!target) {
+            return alarm_at(block, column, alarm::sequence_not_found, fmt::format("sequence number N{} not found", number));
+        }
+        if (target->offset >= here) {
+            // Leaving a loop forward passes its END: that loop and the ones inside it are over.
+            for (std::size_t i = 0; i < f.loops.size(); ++i) {
+                if (index->loop_end_between(f.loops[i].number, here, target->offset)) {
+                    f.loops.resize(i);
+                    break;
+                }
+            }
+        } else {
+            // Jumping back before a loop's DO leaves that loop.
+            while (!f.loops.empty() && f.loops.back().offset > target->offset) f.loops.pop_back();
+            f.jumped_back = true;
+        }
+        src.seek(target->offset, target->line);
+        return std::nullopt;
+    }
+    // No index: forward from here to the end of this program, then from its start back to here.
     std::vector<int> ends_passed;
     bool budget_spent = false;
     auto search = [&](bool forward) -> std::optional<std::pair<std::uint64_t, std::uint32_t>> {
@@ -200,13 +278,6 @@ std::optional<Diagnostic> ProgramRunner::jump_to_sequence(const Block& block, st
         src.seek(target->first, target->second);
         return std::nullopt;
     }
-    auto runaway = [&] {
-        src.seek(here, here_line);
-        return alarm_at(block, column, alarm::too_many_blocks,
-                        fmt::format("more than {} blocks run or searched in loops, jumps and calls: a runaway "
-                                    "program? (raise the budget with --max-blocks)",
-                                    options_.max_blocks));
-    };
     if (budget_spent) return runaway();
     src.seek(f.program.offset, f.program.line);
     if (auto target = search(false)) {

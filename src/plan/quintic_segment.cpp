@@ -48,25 +48,40 @@ double max_abs_quadratic(double c0, double c1, double c2, double l) {
     return m;
 }
 
+//! The real roots of qa s² + qb s + qc = 0 (up to two; none when there are none or infinitely
+//! many). Each root comes from the formula that does not subtract nearly equal numbers: with
+//! qa tiny (a quintic whose s⁵ term is rounding noise) the textbook (−qb + √disc) / (2 qa)
+//! cancels to noise divided by noise and loses the root near −qc / qb, where q'' peaks.
+struct QuadraticRoots {
+    std::array<double, 2> at{};
+    int count = 0;
+};
+QuadraticRoots quadratic_roots(double qa, double qb, double qc) {
+    QuadraticRoots r;
+    if (qa == 0) {
+        if (qb != 0) r.at[r.count++] = -qc / qb;
+        return r;
+    }
+    const double disc = qb * qb - 4 * qa * qc;
+    if (disc < 0) return r;
+    const double q = -0.5 * (qb + std::copysign(std::sqrt(disc), qb));
+    if (q == 0) {  // qb = 0 and qc = 0: a double root at 0
+        r.at[r.count++] = 0;
+        return r;
+    }
+    r.at[r.count++] = q / qa;
+    r.at[r.count++] = qc / q;
+    return r;
+}
+
 //! max |c0 + c1 s + c2 s² + c3 s³| over [0, l]: ends and the roots of the derivative.
 double max_abs_cubic(double c0, double c1, double c2, double c3, double l) {
     auto f = [&](double s) { return std::abs(c0 + s * (c1 + s * (c2 + s * c3))); };
     double m = std::max(f(0), f(l));
     // 3 c3 s² + 2 c2 s + c1 = 0
-    const double qa = 3 * c3;
-    const double qb = 2 * c2;
-    const double qc = c1;
-    if (qa == 0) {
-        if (qb != 0) {
-            const double s = -qc / qb;
-            if (s > 0 && s < l) m = std::max(m, f(s));
-        }
-        return m;
-    }
-    const double disc = qb * qb - 4 * qa * qc;
-    if (disc < 0) return m;
-    const double root = std::sqrt(disc);
-    for (double s : {(-qb - root) / (2 * qa), (-qb + root) / (2 * qa)}) {
+    const QuadraticRoots roots = quadratic_roots(3 * c3, 2 * c2, c1);
+    for (int k = 0; k < roots.count; ++k) {
+        const double s = roots.at[static_cast<std::size_t>(k)];
         if (s > 0 && s < l) m = std::max(m, f(s));
     }
     return m;

@@ -1,7 +1,9 @@
 // Finding the cuts and rewriting them: run-up before the notch start, overrun past its end.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 
 #include <fmt/format.h>
 
@@ -27,6 +29,61 @@ const Io* mcode_of(const Move& move) {
 //! The written program keeps 4 decimals in mm; rounding a distance *up* to that grid keeps the
 //! written run-up at least as long as the S-curve needs (a notch start on the grid stays there).
 double round_up_to_grid(double mm) { return std::ceil(mm * 1e4 - 1e-6) / 1e4; }
+
+//! A point on the cut's line `distance_mm` (at least) beyond `from`, away from `toward`, whose
+//! written coordinates (10 decimals) lie exactly on that line. When both ends are on the 4-decimal
+//! grid of a program, the point is from + k·(from − toward) with k a multiple of 1e-6 (rounded
+//! up): in units of 1e-10 mm every coordinate is then a whole number, from·1e6 + m·(from − toward),
+//! so the written run-up continues the cut without the bend a rounded point would put there.
+//! Off that grid, the point along the direction (off the line by under 1e-10 mm when written).
+struct PlacedPoint {
+    AxisVector point;
+    double distance_mm = 0;  //!< how far beyond `from` it lies, >= the distance asked for
+};
+PlacedPoint beyond(const AxisVector& from, const AxisVector& toward, double distance_mm) {
+    const double length = notch_detail::measured_length(from, toward);
+    auto on_grid = [](double mm) { return std::abs(mm * 1e4 - std::round(mm * 1e4)) < 1e-6 && std::abs(mm) < 1e5; };
+    bool grid = length > 0;
+    for (std::size_t i = 0; i < axis_count && grid; ++i) grid = on_grid(from[i]) && on_grid(toward[i]);
+    const double fraction = distance_mm / length;
+    if (!grid || !(fraction < 1e6)) {
+        const AxisVector away = scaled(from - toward, 1.0 / length);
+        const double placed = round_up_to_grid(distance_mm);
+        return {from + scaled(away, placed), placed};
+    }
+    // An axis-parallel cut (most are): the 4-decimal distance already lands on the grid and on
+    // the line; keep those shorter numbers.
+    {
+        const AxisVector away = scaled(from - toward, 1.0 / length);
+        const double placed = round_up_to_grid(distance_mm);
+        const AxisVector p = from + scaled(away, placed);
+        std::array<std::int64_t, axis_count> pg{};
+        std::array<std::int64_t, axis_count> fg{};
+        std::array<std::int64_t, axis_count> dg{};
+        bool exact = true;
+        for (std::size_t i = 0; i < axis_count && exact; ++i) {
+            exact = on_grid(p[i]);
+            pg[i] = std::llround(p[i] * 1e4);
+            fg[i] = std::llround(from[i] * 1e4);
+            dg[i] = fg[i] - std::llround(toward[i] * 1e4);
+        }
+        for (std::size_t i = 0; i < axis_count && exact; ++i) {
+            for (std::size_t j = i + 1; j < axis_count && exact; ++j) {
+                exact = (pg[i] - fg[i]) * dg[j] == (pg[j] - fg[j]) * dg[i];
+            }
+        }
+        if (exact) return {p, placed};
+    }
+    const auto m = static_cast<std::int64_t>(std::ceil(fraction * 1e6 - 1e-9));
+    PlacedPoint out;
+    for (std::size_t i = 0; i < axis_count; ++i) {
+        const auto f = static_cast<std::int64_t>(std::llround(from[i] * 1e4));
+        const auto t = static_cast<std::int64_t>(std::llround(toward[i] * 1e4));
+        out.point[i] = static_cast<double>(f * 1'000'000 + m * (f - t)) / 1e10;
+    }
+    out.distance_mm = static_cast<double>(m) / 1e6 * length;
+    return out;
+}
 
 std::string block_name(const Move& move) {
     if (move.sequence_number >= 0) return fmt::format("N{} (line {})", move.sequence_number, move.where.line);
@@ -120,9 +177,12 @@ public:
             }
             NotchCut info = describe(cut, line);
             const AxisVector rate = rate_of(line.from, line.to);
-            const AxisVector run_up_point = line.from - scaled(rate, info.run_up_placed_mm);
-            const double overrun_placed = round_up_to_grid(info.overrun_mm);
-            const AxisVector overrun_point = line.to + scaled(rate, overrun_placed);
+            const PlacedPoint run_up_at = beyond(line.from, line.to, info.run_up_mm);
+            const PlacedPoint overrun_at = beyond(line.to, line.from, info.overrun_mm);
+            info.run_up_placed_mm = run_up_at.distance_mm;
+            const AxisVector run_up_point = run_up_at.point;
+            const double overrun_placed = overrun_at.distance_mm;
+            const AxisVector overrun_point = overrun_at.point;
             const bool shortened = approach_holds_run_up(cut, rate, info.run_up_placed_mm);
             info.approach_shortened = shortened;
             bool ok = check_travel(cut_move, run_up_point, "run-up", info.run_up_placed_mm, errors) &&

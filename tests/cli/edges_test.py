@@ -90,6 +90,14 @@ def main() -> int:
               f"alarm 78 says where it looked ({r.stderr.strip()})")
         r = run(nckit, "moves", program("dwell.nc", "G4 P1.5\nM30\n"))
         check(r.returncode == 0 and "warning" in r.stderr and "X1.5" in r.stderr, f"G4 P1.5 warns ({r.stderr.strip()})")
+        # A 0.092 in bore read as mm: an arc under 0.2 mm across warns, once; in G20 it does not.
+        bore = "G21 G90 G0 X10 Y10 Z1\nG1 Z-1 F100\nG2 X10.046 Y10 I0.023 J0 F50\nG2 X10 Y10 I-0.023 J0\nM30\n"
+        r = run(nckit, "check", program("bore.nc", bore))
+        check(r.returncode == 0 and r.stderr.count("implausibly small") == 1 and "bore.nc:3:" in r.stderr
+              and "G20" in r.stderr, f"a 0.046 mm arc warns once ({r.stderr.strip()})")
+        r = run(nckit, "check", program("bore_inch.nc", bore.replace("G21", "G20").replace("Z-1", "Z-0.04")
+                                        .replace("Z1", "Z0.04").replace("X10", "X1").replace("Y10", "Y1")))
+        check(r.returncode == 0 and "implausibly" not in r.stderr, f"an inch bore does not warn ({r.stderr.strip()})")
         r = run(nckit, "moves", ROOT / "examples" / "02_lathe_shaft.ngc")
         check(r.returncode == 2 and "--machine" in r.stderr, f"a lathe program on the mill hints ({r.stderr.strip()})")
 

@@ -47,6 +47,8 @@ public:
     [[nodiscard]] Result<ProgramSource> reopen() const;
 
     [[nodiscard]] const std::shared_ptr<const std::string>& file() const { return name_; }
+    //! Lines passed can be read again after seek(): false for standard input and other pipes.
+    [[nodiscard]] bool rereadable() const { return rereadable_; }
 
 private:
     ProgramSource() = default;
@@ -60,6 +62,7 @@ private:
     std::uint64_t buffer_offset_ = 0;  // file offset of text_[0]
     std::uint32_t line_number_ = 0;
     bool eof_ = false;
+    bool rereadable_ = true;
     std::string line_;            // a line that straddles two buffer fills
 };
 
