@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "block_words.hpp"
+#include "corner_round.hpp"
 #include "macro/variables.hpp"
 #include "modal_state.hpp"
 #include "program_transform.hpp"
@@ -122,6 +123,10 @@ private:
     void write_lathe_offset();
     [[nodiscard]] std::optional<MacroValue> read_lathe_offset_variable(std::int64_t number) const;
     [[nodiscard]] std::optional<SystemVariables::WriteError> write_lathe_offset_variable(std::int64_t number, double value);
+    // Corner rounding and chamfers, `,R` / `,C` (executor_corner.cpp): the line is held until the
+    // next block's move shows where the corner goes.
+    std::optional<Diagnostic> check_corner();
+    std::optional<Diagnostic> apply_corner(std::vector<Move>& out, std::size_t first, bool program_end);
 
     // Drilling cycles (executor_cycles.cpp).
     std::optional<Diagnostic> check_cycle_words() const;
@@ -174,6 +179,17 @@ private:
 
     SequenceReader sequence_reader_;
     bool skip_past_sequence_ = false;
+
+    //! A G1 line with a corner word, and what its block made after it, waiting for the next move.
+    struct HeldCorner {
+        Word word;                 //!< the ,R or ,C word (its column) ...
+        SourceLocation location;   //!< ... in this block
+        CornerKind kind = CornerKind::round;
+        double size_mm = 0;
+        Plane plane = Plane::xy;
+        std::vector<Move> moves;   //!< the line first
+    };
+    std::optional<HeldCorner> corner_;
 
     double elapsed_s_ = 0;          //!< simulated time, s
     int last_mcode_ = 0;            //!< #4113

@@ -204,6 +204,7 @@ std::optional<Diagnostic> ProgramRunner::resolve_words(const Block& block, Block
     resolved.clear();
     resolved.location = block.location;
     resolved.comment = block.comment;
+    resolved.corner = block.corner;
     const bool inch = executor_.inch_units();
     for (const Word& word : block.words) {
         if (word.expr < 0) {
