@@ -22,6 +22,7 @@ Executor::Executor(const MachineConfig& machine, const InterpreterOptions& optio
         rotary_[index(axis.axis)] = axis.kind == AxisKind::rotary;
         position_[axis.axis] = axis.home;
     }
+    skip_position_ = position_;  // #5061- before any G31: where the machine starts
     modal_.diameter_mode = machine.diameter_mode;
     // A lathe (X and Z, no Y) starts in its only useful plane, as Fanuc lathe controls do.
     if (configured_.contains(Axis::X) && configured_.contains(Axis::Z) && !configured_.contains(Axis::Y)) {

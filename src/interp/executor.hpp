@@ -20,6 +20,10 @@ namespace nckit::interp {
 //! #2001-#2999: the tool offsets (executor_tools.cpp).
 inline constexpr std::int64_t first_tool_variable = 2001;
 inline constexpr std::int64_t last_tool_variable = 2999;
+//! #1000-#1099: inputs (read-only, the machine file's [inputs]); #1100-#1199: outputs.
+inline constexpr std::int64_t first_macro_input = 1000;
+inline constexpr std::int64_t first_macro_output = 1100;
+inline constexpr std::int64_t last_macro_input = 1199;
 
 //! Reads the blocks N p through N q of the running program for the lathe cycles G70-G73, their
 //! expressions evaluated; the error names what was not found. Set by the program runner.
@@ -89,6 +93,7 @@ private:
     // Motion (executor_motion.cpp).
     std::optional<Diagnostic> move(std::vector<Move>& out);
     std::optional<Diagnostic> home(std::vector<Move>& out);
+    std::optional<Diagnostic> probe(std::vector<Move>& out);  //!< G31 (executor_probe.cpp)
     std::optional<Diagnostic> straight(GCode motion, const AxisVector& target, std::vector<Move>& out);
     std::optional<Diagnostic> arc(GCode motion, const AxisVector& target, std::vector<Move>& out);
     std::optional<Diagnostic> sync(const AxisVector& target, std::vector<Move>& out);
@@ -153,6 +158,7 @@ private:
 
     // System variable helpers (executor_system_variables.cpp).
     [[nodiscard]] std::optional<MacroValue> modal_code(int group) const;
+    [[nodiscard]] std::optional<MacroValue> read_macro_input(std::int64_t number) const;
     [[nodiscard]] const AxisConfig* axis_by_number(std::int64_t one_based) const;
     [[nodiscard]] double to_program_units(Axis axis, double mm) const;
     [[nodiscard]] double from_program_units(Axis axis, double value) const;
@@ -190,6 +196,10 @@ private:
         std::vector<Move> moves;   //!< the line first
     };
     std::optional<HeldCorner> corner_;
+
+    AxisVector skip_position_;                  //!< machine coordinates where G31 last skipped (#5061-)
+    std::array<double, 100> macro_outputs_{};   //!< #1100-#1199 as the program wrote them
+    std::array<bool, 100> macro_output_set_{};
 
     double elapsed_s_ = 0;          //!< simulated time, s
     int last_mcode_ = 0;            //!< #4113
