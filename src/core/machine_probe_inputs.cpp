@@ -55,7 +55,7 @@ void read_probe_and_inputs(TableReader& root, MachineConfig& config, ConfigSink&
             int number = 0;
             auto [end, ec] = std::from_chars(name.data(), name.data() + name.size(), number);
             if (ec != std::errc{} || end != name.data() + name.size() || number < first_input || number > last_input) {
-                sink.error(node.source(), "config-key",
+                sink.error(node.source(), "config-unknown-key",
                            fmt::format("[inputs] keys are macro variable numbers {} to {}, not '{}'", first_input,
                                        last_input, name));
                 continue;
