@@ -10,6 +10,7 @@
 #include "nckit/core/machine.hpp"
 #include "nckit/core/toml_file.hpp"
 #include "nckit/core/toml_table_reader.hpp"
+#include "machine_probe_inputs.hpp"
 
 namespace nckit {
 
@@ -388,6 +389,7 @@ MachineConfig read_document(const toml::table& document, ConfigSink& sink) {
     if (const toml::table* spindle = root.table("spindle", Need::optional)) {
         read_spindle(*spindle, config, sink);
     }
+    detail::read_probe_and_inputs(root, config, sink);
     root.reject_unknown_keys();
     return config;
 }

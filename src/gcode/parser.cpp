@@ -50,6 +50,10 @@ public:
                 if (auto error = parse_word()) return error;
                 continue;
             }
+            if (c == ',' && block_.statement.kind == StatementKind::none) {
+                if (auto error = parse_corner_word()) return error;
+                continue;
+            }
             if (c == ':' && block_.words.empty() && block_.statement.kind == StatementKind::none) {
                 // ISO 6983's program number: `:1234` is O1234.
                 if (auto error = parse_word('O')) return error;
@@ -93,6 +97,26 @@ private:
             }
         }
         return error(open, "syntax", "comment is not closed: '(' without ')'");
+    }
+
+    //! `,R5` or `,C2` (blanks allowed after the comma, as in `Y 0, C 8`): Fanuc's corner
+    //! rounding and chamfer. A plain number only; one per block.
+    std::optional<Diagnostic> parse_corner_word() {
+        const std::uint32_t comma = column();
+        ++pos_;
+        skip_blanks();
+        const char letter = pos_ < line_.size() ? upper(line_[pos_]) : '\0';
+        if (letter != 'R' && letter != 'C') {
+            return error(comma, "syntax", "',' must be followed by R (corner rounding) or C (chamfer)");
+        }
+        if (block_.corner.letter != 0) return error(comma, "duplicate-word", "two corner words (,R / ,C) in one block");
+        if (auto error = parse_word(letter)) return error;
+        Word word = block_.words.back();
+        block_.words.pop_back();
+        if (word.expr >= 0) return error(comma, "syntax", fmt::format(",{} takes a number, not an expression", letter));
+        word.column = comma;
+        block_.corner = word;
+        return std::nullopt;
     }
 
     Diagnostic statement_not_alone(std::uint32_t col) const {

@@ -22,6 +22,7 @@ Executor::Executor(const MachineConfig& machine, const InterpreterOptions& optio
         rotary_[index(axis.axis)] = axis.kind == AxisKind::rotary;
         position_[axis.axis] = axis.home;
     }
+    skip_position_ = position_;  // #5061- before any G31: where the machine starts
     modal_.diameter_mode = machine.diameter_mode;
     // A lathe (X and Z, no Y) starts in its only useful plane, as Fanuc lathe controls do.
     if (configured_.contains(Axis::X) && configured_.contains(Axis::Z) && !configured_.contains(Axis::Y)) {
@@ -77,6 +78,7 @@ std::optional<Diagnostic> Executor::run(const Block& block, std::vector<Move>& o
     if (auto e = collect_words(block, words_, machine_.gcode_system)) return e;
     if (auto e = check_words()) return e;
     if (auto e = check_cutter_comp()) return e;
+    if (auto e = check_corner()) return e;
 
     // Everything below may change state, so work on copies and commit at the end: an error
     // leaves the interpreter as it was before the block.
@@ -85,6 +87,9 @@ std::optional<Diagnostic> Executor::run(const Block& block, std::vector<Move>& o
     const bool may_set_offsets = words_.group(ModalGroup::non_modal) >= 0;
     std::optional<Offsets> saved_offsets;
     if (may_set_offsets) saved_offsets = offsets_;
+    const bool corner_involved = corner_.has_value() || block.corner.letter != 0;
+    std::optional<HeldCorner> saved_corner;
+    if (corner_involved) saved_corner = corner_;
     std::optional<CutterCompensator> saved_comp;
     if (comp_.engaged() || words_.group(ModalGroup::cutter_comp) >= 0) saved_comp = comp_;
     AxisVector saved_position = position_;
@@ -98,6 +103,7 @@ std::optional<Diagnostic> Executor::run(const Block& block, std::vector<Move>& o
         if (saved_offsets) offsets_ = *saved_offsets;
         position_ = saved_position;
         if (saved_comp) comp_ = *saved_comp;
+        if (corner_involved) corner_ = saved_corner;
         out.resize(saved_size);
         return std::optional<Diagnostic>(std::move(d));
     };
@@ -111,6 +117,9 @@ std::optional<Diagnostic> Executor::run(const Block& block, std::vector<Move>& o
     if (auto e = transformed_move(out)) return fail(*e);
     if (auto e = emit_mcodes(out, true)) return fail(*e);
     program_end = words_.has_m(2) || words_.has_m(30);
+    if (corner_involved) {
+        if (auto e = apply_corner(out, saved_size, program_end)) return fail(*e);
+    }
     if (auto e = compensate(out, saved_size, program_end)) return fail(*e);
     if (program_end) parts_done_ += 1;
     if (words_.mcode_count > 0) last_mcode_ = words_.mcodes[words_.mcode_count - 1].code;

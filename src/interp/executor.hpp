@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "block_words.hpp"
+#include "corner_round.hpp"
 #include "macro/variables.hpp"
 #include "modal_state.hpp"
 #include "program_transform.hpp"
@@ -19,6 +20,10 @@ namespace nckit::interp {
 //! #2001-#2999: the tool offsets (executor_tools.cpp).
 inline constexpr std::int64_t first_tool_variable = 2001;
 inline constexpr std::int64_t last_tool_variable = 2999;
+//! #1000-#1099: inputs (read-only, the machine file's [inputs]); #1100-#1199: outputs.
+inline constexpr std::int64_t first_macro_input = 1000;
+inline constexpr std::int64_t first_macro_output = 1100;
+inline constexpr std::int64_t last_macro_input = 1199;
 
 //! Reads the blocks N p through N q of the running program for the lathe cycles G70-G73, their
 //! expressions evaluated; the error names what was not found. Set by the program runner.
@@ -88,6 +93,7 @@ private:
     // Motion (executor_motion.cpp).
     std::optional<Diagnostic> move(std::vector<Move>& out);
     std::optional<Diagnostic> home(std::vector<Move>& out);
+    std::optional<Diagnostic> probe(std::vector<Move>& out);  //!< G31 (executor_probe.cpp)
     std::optional<Diagnostic> straight(GCode motion, const AxisVector& target, std::vector<Move>& out);
     std::optional<Diagnostic> arc(GCode motion, const AxisVector& target, std::vector<Move>& out);
     std::optional<Diagnostic> sync(const AxisVector& target, std::vector<Move>& out);
@@ -122,6 +128,10 @@ private:
     void write_lathe_offset();
     [[nodiscard]] std::optional<MacroValue> read_lathe_offset_variable(std::int64_t number) const;
     [[nodiscard]] std::optional<SystemVariables::WriteError> write_lathe_offset_variable(std::int64_t number, double value);
+    // Corner rounding and chamfers, `,R` / `,C` (executor_corner.cpp): the line is held until the
+    // next block's move shows where the corner goes.
+    std::optional<Diagnostic> check_corner();
+    std::optional<Diagnostic> apply_corner(std::vector<Move>& out, std::size_t first, bool program_end);
 
     // Drilling cycles (executor_cycles.cpp).
     std::optional<Diagnostic> check_cycle_words() const;
@@ -150,6 +160,7 @@ private:
 
     // System variable helpers (executor_system_variables.cpp).
     [[nodiscard]] std::optional<MacroValue> modal_code(int group) const;
+    [[nodiscard]] std::optional<MacroValue> read_macro_input(std::int64_t number) const;
     [[nodiscard]] const AxisConfig* axis_by_number(std::int64_t one_based) const;
     [[nodiscard]] double to_program_units(Axis axis, double mm) const;
     [[nodiscard]] double from_program_units(Axis axis, double value) const;
@@ -176,6 +187,21 @@ private:
 
     SequenceReader sequence_reader_;
     bool skip_past_sequence_ = false;
+
+    //! A G1 line with a corner word, and what its block made after it, waiting for the next move.
+    struct HeldCorner {
+        Word word;                 //!< the ,R or ,C word (its column) ...
+        SourceLocation location;   //!< ... in this block
+        CornerKind kind = CornerKind::round;
+        double size_mm = 0;
+        Plane plane = Plane::xy;
+        std::vector<Move> moves;   //!< the line first
+    };
+    std::optional<HeldCorner> corner_;
+
+    AxisVector skip_position_;                  //!< machine coordinates where G31 last skipped (#5061-)
+    std::array<double, 100> macro_outputs_{};   //!< #1100-#1199 as the program wrote them
+    std::array<bool, 100> macro_output_set_{};
 
     double elapsed_s_ = 0;          //!< simulated time, s
     int last_mcode_ = 0;            //!< #4113

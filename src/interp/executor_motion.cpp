@@ -97,6 +97,7 @@ std::optional<Diagnostic> Executor::move(std::vector<Move>& out) {
         if (!block_has_axis_words()) return std::nullopt;
         return lathe_single_cycle(out);
     }
+    if (non_modal == g(31)) return probe(out);
     // G92.1 takes no axis words: check_words() gave any to the motion mode, so they move.
     if (non_modal == g(4) || non_modal == g(10) || non_modal == g(52) || non_modal == g(92) ||
         non_modal == g(50) || motion_ == g(80) || words_.group(ModalGroup::length_comp) == g(43, 1)) {

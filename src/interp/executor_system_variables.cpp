@@ -74,6 +74,7 @@ std::optional<MacroValue> Executor::read_system(std::int64_t n) const {
         default: break;
     }
     if (n >= first_tool_variable && n <= last_tool_variable) return read_tool_variable(n);
+    if (n >= first_macro_input && n <= last_macro_input) return read_macro_input(n);
     const AxisVector work = position_ - program_offset();
     auto axis_value = [&](std::int64_t base, const AxisVector& source) -> std::optional<MacroValue> {
         const AxisConfig* axis = axis_by_number(n - base + 1);
@@ -83,6 +84,8 @@ std::optional<MacroValue> Executor::read_system(std::int64_t n) const {
     if (n >= 5001 && n < 5001 + axes_per_block) return axis_value(5001, work);
     if (n >= 5021 && n < 5021 + axes_per_block) return axis_value(5021, position_);
     if (n >= 5041 && n < 5041 + axes_per_block) return axis_value(5041, work);
+    // The G31 skip point in the work system it was measured in (the offsets in force now).
+    if (n >= 5061 && n < 5061 + axes_per_block) return axis_value(5061, skip_position_ - program_offset());
     if (n >= 5081 && n < 5081 + axes_per_block) return axis_value(5081, modal_.tool_offset);
     if (n >= work_offset_base && n < work_offset_base + 6 * work_offset_stride) {
         std::int64_t system = (n - work_offset_base) / work_offset_stride;
@@ -104,6 +107,12 @@ std::optional<SystemVariables::WriteError> Executor::write_system(std::int64_t n
         return std::nullopt;
     }
     if (n >= first_tool_variable && n <= last_tool_variable) return write_tool_variable(n, value);
+    if (n >= first_macro_output && n <= last_macro_input) {
+        const auto slot = static_cast<std::size_t>(n - first_macro_output);
+        macro_outputs_[slot] = value;
+        macro_output_set_[slot] = true;
+        return std::nullopt;
+    }
     if (n >= work_offset_base && n < work_offset_base + 6 * work_offset_stride) {
         std::int64_t system = (n - work_offset_base) / work_offset_stride;
         std::int64_t slot = (n - work_offset_base) % work_offset_stride;
@@ -119,6 +128,19 @@ std::optional<SystemVariables::WriteError> Executor::write_system(std::int64_t n
         return SystemVariables::WriteError{alarm::protected_variable, fmt::format("#{} is read-only", n)};
     }
     return SystemVariables::WriteError{alarm::illegal_variable, fmt::format("#{} is not a variable", n)};
+}
+
+std::optional<MacroValue> Executor::read_macro_input(std::int64_t n) const {
+    // #1100-#1199 are outputs: what the program wrote reads back; otherwise the machine file's
+    // [inputs] value, and 0 (signal off) for an input it does not list.
+    if (n >= first_macro_output) {
+        const auto slot = static_cast<std::size_t>(n - first_macro_output);
+        if (macro_output_set_[slot]) return MacroValue::of(macro_outputs_[slot]);
+    }
+    for (const MacroInput& input : machine_.macro_inputs) {
+        if (input.number == n) return MacroValue::of(input.value);
+    }
+    return MacroValue::of(0.0);
 }
 
 double Executor::duration_s(const Move& move) const {

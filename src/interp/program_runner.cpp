@@ -195,6 +195,7 @@ std::optional<InterpResult> ProgramRunner::run_block(const Block& block, std::ve
     }
     if (block.statement.kind != StatementKind::none) {
         if (auto error = run_statement(block)) return InterpResult(std::move(*error));
+        if (stop_requested_) program_stop(block, pending);
         return std::nullopt;
     }
     return run_nc_block(block, pending);
@@ -204,6 +205,7 @@ std::optional<Diagnostic> ProgramRunner::resolve_words(const Block& block, Block
     resolved.clear();
     resolved.location = block.location;
     resolved.comment = block.comment;
+    resolved.corner = block.corner;
     const bool inch = executor_.inch_units();
     for (const Word& word : block.words) {
         if (word.expr < 0) {
@@ -235,6 +237,19 @@ std::optional<Diagnostic> ProgramRunner::resolve_words(const Block& block, Block
         resolved.words.push_back(out);
     }
     return std::nullopt;
+}
+
+void ProgramRunner::program_stop(const Block& block, std::vector<Move>& pending) {
+    stop_requested_ = false;
+    Io stop{IoKind::mcode, 0, 0};
+    stop.waits = true;
+    pending.push_back(Move{stop, block.location, last_sequence_});
+    if (options_.on_warning) {
+        Diagnostic note = error_at(block.at_column(block.statement.column), "program-stop",
+                                   fmt::format("#3006 program stop: {}", block.comment));
+        note.severity = Severity::warning;
+        options_.on_warning(note);
+    }
 }
 
 std::optional<MacroValue> ProgramRunner::read_system(std::int64_t number) const {
@@ -271,6 +286,14 @@ std::optional<SystemVariables::WriteError> ProgramRunner::write_system(std::int6
         case 3002: timer_hours_base_s_ = executor_.elapsed_s() - value * seconds_per_hour; return std::nullopt;
         case 3003:
         case 3004: return std::nullopt;  // single-block / feed-hold suppression: nothing to suppress here
+        case 3006: {
+            // #3006 = 1 (MESSAGE): stop as M0 does, showing the message; cycle start goes on.
+            if (current_block_->comment.empty()) {
+                return WriteError{alarm::format, "#3006 needs its message in a comment: #3006 = 1 (TEXT)"};
+            }
+            stop_requested_ = true;
+            return std::nullopt;
+        }
         default: return executor_.write_system(number, value);
     }
 }

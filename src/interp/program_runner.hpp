@@ -69,6 +69,8 @@ private:
     [[nodiscard]] Diagnostic alarm_at(const Block& block, std::uint32_t column, int alarm, std::string message) const;
 
     // runner_flow.cpp: statements, jumps and loops.
+    //! #3006's stop: an M0 event and the message as a warning.
+    void program_stop(const Block& block, std::vector<Move>& pending);
     std::optional<Diagnostic> run_statement(const Block& block);
     std::optional<Diagnostic> assign(const Block& block);
     std::optional<Diagnostic> jump_to_sequence(const Block& block, std::uint32_t column, std::int64_t number);
@@ -153,6 +155,7 @@ private:
     std::int64_t last_sequence_ = 0;  // #4114
     double timer_ms_base_s_ = 0;      // #3001 = (elapsed - base) in ms
     double timer_hours_base_s_ = 0;   // #3002
+    bool stop_requested_ = false;     // #3006 = 1 (MESSAGE) in the statement just run
     bool seen_tape_mark_ = false;
     bool seen_block_ = false;
     bool error_is_recoverable_ = false;

@@ -219,6 +219,7 @@ std::optional<InterpResult> ProgramRunner::run_nc_block(const Block& block, std:
     // The rest of the block runs first; a call or return it holds follows its motion.
     scan_.clear();
     scan_.location = nc->location;
+    scan_.corner = nc->corner;
     const Word* p = nullptr;
     const Word* l = nullptr;
     for (const Word& w : nc->words) {

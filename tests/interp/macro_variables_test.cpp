@@ -38,8 +38,9 @@ TEST(MacroVariables, IllegalNumbersAreAlarm115) {
     EXPECT_EQ(alarm_of("#99=1\n"), "115 1:1");
     EXPECT_EQ(alarm_of("#1=#34\n"), "115 1:4");
     EXPECT_EQ(alarm_of("#1=2+#50\n"), "115 1:6");
-    EXPECT_EQ(alarm_of("#1000=1\n"), "115 1:1");
-    EXPECT_EQ(alarm_of("#1=#1000\n"), "115 1:4");
+    EXPECT_EQ(alarm_of("#1200=1\n"), "115 1:1");  // past the interface signals #1000-#1199
+    EXPECT_EQ(alarm_of("#1=#1200\n"), "115 1:4");
+    EXPECT_EQ(alarm_of("#1000=1\n"), "116 1:1");  // an input: read-only
     EXPECT_EQ(alarm_of("#1=#[0-1]\n"), "115 1:4");
     EXPECT_EQ(alarm_of("G1 X#40 F100\n"), "115 1:5");
 }

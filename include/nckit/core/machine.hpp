@@ -92,6 +92,19 @@ enum class Dialect {
     linuxcnc  //!< LinuxCNC's RS-274/NGC: O-word subroutines and control flow, named parameters
 };
 
+//! A surface G31's skip signal fires on: the plane where one axis stands at `at_mm` (machine
+//! coordinates, mm or deg), as a touch probe or tool setter meets the part there.
+struct ProbeSurface {
+    Axis axis = Axis::Z;
+    double at_mm = 0;
+};
+
+//! A Custom Macro B input (#1000-#1199) and the value it reads in a run.
+struct MacroInput {
+    int number = 0;
+    double value = 0;
+};
+
 struct MachineConfig {
     std::string name;
     Dialect dialect = Dialect::fanuc;  //!< `dialect = "linuxcnc"`; `--dialect` overrides it
@@ -119,6 +132,10 @@ struct MachineConfig {
     //! The tool table (`tools = "FILE"` in [machine], or `--tools FILE`); empty when none given.
     ToolTable tools;
     std::string tools_file;         //!< where `tools` came from; empty for none
+    //! `[probe] surfaces`: where G31 skips; empty: a G31 never meets anything (an error).
+    std::vector<ProbeSurface> probe_surfaces;
+    //! `[inputs]`: #1000-#1199 that read a value other than 0.
+    std::vector<MacroInput> macro_inputs;
 
     //! The configured axis, or null when the machine has no such axis.
     [[nodiscard]] const AxisConfig* find(Axis axis) const;

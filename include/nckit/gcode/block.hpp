@@ -47,6 +47,10 @@ struct Block {
     ExprArena exprs;                //!< nodes of every expression in the block
     MacroStatement statement;
     std::string comment;            //!< text of the block's first ( ) comment
+    //! Fanuc's corner word: `,R5` (letter 'R', round the corner after this move) or `,C2`
+    //! (letter 'C', chamfer it); letter 0 when the block has none. Kept apart from `words`, whose
+    //! R and C mean other things.
+    Word corner;
 
     void clear() {
         block_delete = false;
@@ -55,6 +59,7 @@ struct Block {
         exprs.clear();
         statement = MacroStatement{};
         comment.clear();
+        corner = Word{};
     }
 
     [[nodiscard]] SourceLocation at_column(std::uint32_t column) const {

@@ -1,0 +1,157 @@
+(Extension_2)
+(T1  D=1 CR=0 - ZMIN=-3.3 - flat end mill)
+G90 G94
+G17
+G21
+(When using Fusion 360 for Personal Use, the feedrate of)
+(rapid moves is reduced to match the feedrate of cutting)
+(moves, which can increase machining time. Unrestricted rapid)
+(moves are available with a Fusion 360 Subscription.)
+
+(4-holes)
+T1
+S20000 M3
+G54
+G0 X-24 Y0
+Z3
+G1 Z1 F300
+Z-0.6 F20
+G3 X-26 Y0 I-1 J0 F300
+X-24 Y0 I1 J0
+G1 Z-1.2 F20
+G3 X-26 Y0 I-1 J0 F300
+X-24 Y0 I1 J0
+G1 Z-1.8 F20
+G3 X-26 Y0 I-1 J0 F300
+X-24 Y0 I1 J0
+G1 Z-2.4 F20
+G3 X-26 Y0 I-1 J0 F300
+X-24 Y0 I1 J0
+G1 Z-3 F20
+G3 X-26 Y0 I-1 J0 F300
+X-24 Y0 I1 J0
+G1 Z-3.3 F20
+G3 X-26 Y0 I-1 J0 F300
+X-24 Y0 I1 J0
+G1 Z2
+X1 Y-25
+Z1
+Z-0.6 F20
+G3 X-1 Y-25 I-1 J0 F300
+X1 Y-25 I1 J0
+G1 Z-1.2 F20
+G3 X-1 Y-25 I-1 J0 F300
+X1 Y-25 I1 J0
+G1 Z-1.8 F20
+G3 X-1 Y-25 I-1 J0 F300
+X1 Y-25 I1 J0
+G1 Z-2.4 F20
+G3 X-1 Y-25 I-1 J0 F300
+X1 Y-25 I1 J0
+G1 Z-3 F20
+G3 X-1 Y-25 I-1 J0 F300
+X1 Y-25 I1 J0
+G1 Z-3.3 F20
+G3 X-1 Y-25 I-1 J0 F300
+X1 Y-25 I1 J0
+G1 Z2
+X25.981 Y0.195
+Z1
+Z-0.6 F20
+G3 X24.019 Y-0.195 I-0.981 J-0.195 F300
+X25.981 Y0.195 I0.981 J0.195
+G1 Z-1.2 F20
+G3 X24.019 Y-0.195 I-0.981 J-0.195 F300
+X25.981 Y0.195 I0.981 J0.195
+G1 Z-1.8 F20
+G3 X24.019 Y-0.195 I-0.981 J-0.195 F300
+X25.981 Y0.195 I0.981 J0.195
+G1 Z-2.4 F20
+G3 X24.019 Y-0.195 I-0.981 J-0.195 F300
+X25.981 Y0.195 I0.981 J0.195
+G1 Z-3 F20
+G3 X24.019 Y-0.195 I-0.981 J-0.195 F300
+X25.981 Y0.195 I0.981 J0.195
+G1 Z-3.3 F20
+G3 X24.019 Y-0.195 I-0.981 J-0.195 F300
+X25.981 Y0.195 I0.981 J0.195
+G1 Z2
+X0.981 Y25.195
+Z1
+Z-0.6 F20
+G3 X-0.981 Y24.805 I-0.981 J-0.195 F300
+X0.981 Y25.195 I0.981 J0.195
+G1 Z-1.2 F20
+G3 X-0.981 Y24.805 I-0.981 J-0.195 F300
+X0.981 Y25.195 I0.981 J0.195
+G1 Z-1.8 F20
+G3 X-0.981 Y24.805 I-0.981 J-0.195 F300
+X0.981 Y25.195 I0.981 J0.195
+G1 Z-2.4 F20
+G3 X-0.981 Y24.805 I-0.981 J-0.195 F300
+X0.981 Y25.195 I0.981 J0.195
+G1 Z-3 F20
+G3 X-0.981 Y24.805 I-0.981 J-0.195 F300
+X0.981 Y25.195 I0.981 J0.195
+G1 Z-3.3 F20
+G3 X-0.981 Y24.805 I-0.981 J-0.195 F300
+X0.981 Y25.195 I0.981 J0.195
+G1 Z3
+(When using Fusion 360 for Personal Use, the feedrate of)
+(rapid moves is reduced to match the feedrate of cutting)
+(moves, which can increase machining time. Unrestricted rapid)
+(moves are available with a Fusion 360 Subscription.)
+
+(mainHole)
+G0 X0.475 Y0
+G1 Z3 F300
+Z1
+Z-0.6 F20
+G3 X-0.475 Y0 I-0.475 J0 F300
+X0.475 Y0 I0.475 J0
+G1 Z-1.2 F20
+G3 X-0.475 Y0 I-0.475 J0 F300
+X0.475 Y0 I0.475 J0
+G1 Z-1.8 F20
+G3 X-0.475 Y0 I-0.475 J0 F300
+X0.475 Y0 I0.475 J0
+G1 Z-2.4 F20
+G3 X-0.475 Y0 I-0.475 J0 F300
+X0.475 Y0 I0.475 J0
+G1 Z-3 F20
+G3 X-0.475 Y0 I-0.475 J0 F300
+X0.475 Y0 I0.475 J0
+G1 Z-3.3 F20
+G3 X-0.475 Y0 I-0.475 J0 F300
+X0.475 Y0 I0.475 J0
+G1 Z3
+(When using Fusion 360 for Personal Use, the feedrate of)
+(rapid moves is reduced to match the feedrate of cutting)
+(moves, which can increase machining time. Unrestricted rapid)
+(moves are available with a Fusion 360 Subscription.)
+
+(Circle)
+G0 X30.5 Y0
+G1 Z3 F300
+Z1
+Z-0.6 F20
+G2 X-30.5 Y0 I-30.5 J0 F300
+X30.5 Y0 I30.5 J0
+G1 Z-1.2 F20
+G2 X-30.5 Y0 I-30.5 J0 F300
+X30.5 Y0 I30.5 J0
+G1 Z-1.8 F20
+G2 X-30.5 Y0 I-30.5 J0 F300
+X30.5 Y0 I30.5 J0
+G1 Z-2.4 F20
+G2 X-30.5 Y0 I-30.5 J0 F300
+X30.5 Y0 I30.5 J0
+G1 Z-3 F20
+G2 X-30.5 Y0 I-30.5 J0 F300
+X30.5 Y0 I30.5 J0
+G1 Z-3.3 F20
+G2 X-30.5 Y0 I-30.5 J0 F300
+X30.5 Y0 I30.5 J0
+G1 Z3
+M5
+M30
