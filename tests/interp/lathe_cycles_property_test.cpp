@@ -136,7 +136,9 @@ TEST(LatheCycleProperties, RandomMonotonicShapes) {
         for (std::size_t k = 0; k < c.shape.size(); ++k) {
             EXPECT_NEAR(finish[k].to[Axis::X], c.shape[k].r, 1e-9);
             EXPECT_NEAR(finish[k].to[Axis::Z], c.shape[k].z, 1e-9);
-            if (k > 0) EXPECT_DOUBLE_EQ(finish[k].feed.mm_per_rev, 0.1);
+            if (k > 0) {
+                EXPECT_DOUBLE_EQ(finish[k].feed.mm_per_rev, 0.1);
+            }
         }
     }
 }
