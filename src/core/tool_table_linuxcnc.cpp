@@ -80,6 +80,11 @@ bool read_row(std::string_view text, LineReader& reader, bool inch, ToolEntry& t
             return false;
         }
         seen[letter - 'A'] = true;
+        if ((letter == 'Z' || letter == 'X' || letter == 'D') && std::abs(*value * scale) > max_tool_value_mm) {
+            reader.error(column, fmt::format("{} {} is beyond the {} mm a tool can measure", letter, *value,
+                                             max_tool_value_mm));
+            return false;
+        }
         switch (letter) {
             case 'T': case 'P': case 'Q':
                 if (!is_whole(*value) || *value < 0 || *value > max_tool_number) {

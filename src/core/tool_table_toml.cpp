@@ -1,4 +1,7 @@
 // The TOML tool file: `[[tool]]` tables, each with its number and the columns it needs.
+#include <cmath>
+#include <array>
+
 #include <fmt/format.h>
 
 #include "nckit/core/tool_table.hpp"
@@ -60,6 +63,24 @@ std::optional<ToolEntry> read_tool(const toml::table& table, ConfigSink& sink) {
     reader.number_into("back_angle_deg", Need::optional, Sign::any, tool.back_angle_deg);
     if (auto comment = reader.text("comment", Need::optional)) tool.comment = std::move(*comment);
     reader.reject_unknown_keys();
+    // Each column with the keys that may fill it (a diameter or nose radius lands in a radius).
+    struct Column {
+        double value_mm;
+        std::array<std::string_view, 3> keys;  // the column's own key first; empty when fewer
+    };
+    for (const Column& column : {Column{tool.length_mm, {"length_mm"}},
+                                 Column{tool.length_wear_mm, {"length_wear_mm"}},
+                                 Column{tool.radius_mm, {"radius_mm", "diameter_mm", "nose_radius_mm"}},
+                                 Column{tool.radius_wear_mm, {"radius_wear_mm", "diameter_wear_mm"}},
+                                 Column{tool.x_offset_mm, {"x_offset_mm"}}, Column{tool.x_wear_mm, {"x_wear_mm"}}}) {
+        if (std::abs(column.value_mm) <= max_tool_value_mm) continue;
+        std::string_view given = column.keys[0];
+        for (std::string_view key : column.keys) {
+            if (!key.empty() && reader.has(key)) given = key;
+        }
+        sink.error(reader.region_of(given), "config-value",
+                   fmt::format("'{}' is beyond the {} mm a tool can measure", given, max_tool_value_mm));
+    }
     if (sink.diagnostics.size() != errors_before) return std::nullopt;
     return tool;
 }

@@ -67,6 +67,11 @@ TEST(ToolTableToml, ErrorsCarryLineAndColumn) {
               "t.toml:3:15: error: 'orientation' is a tip orientation 0 to 9, not 12");
     EXPECT_NE(error("[[tool]]\nlength_mm = 3\n").find("t.toml:1:1: error:"), std::string::npos);
     EXPECT_NE(error("[[tool]]\nnumber = 1\ndiameter_mm = -2\n").find("t.toml:3:15: error:"), std::string::npos);
+    // Values a tool cannot have (a fuzzer found 1e308 + 1e308 wear overflowing to infinity).
+    EXPECT_EQ(error("[[tool]]\nnumber = 1\ndiameter_mm = 1e308\n"),
+              "t.toml:3:15: error: 'diameter_mm' is beyond the 100000 mm a tool can measure");
+    EXPECT_EQ(error("[[tool]]\nnumber = 1\nlength_wear_mm = -2e5\n"),
+              "t.toml:3:18: error: 'length_wear_mm' is beyond the 100000 mm a tool can measure");
 }
 
 TEST(ToolTableLinuxcnc, ReadsToolTblAsItIs) {
@@ -109,6 +114,12 @@ TEST(ToolTableLinuxcnc, BadLinesAreLocated) {
     EXPECT_EQ(error("P1 Z2\n"), "tool.tbl:1:1: error: tool line without T (tool number)");
     EXPECT_EQ(error("T1 D-1\n"), "tool.tbl:1:4: error: D (diameter) must not be negative");
     EXPECT_EQ(error("T1 K1\n"), "tool.tbl:1:4: error: K is not a tool table column");
+    EXPECT_EQ(error("T1 Z2e5\n"), "tool.tbl:1:4: error: Z 200000 is beyond the 100000 mm a tool can measure");
+    // An inch table's ×25.4 must not overflow a value that strtod still reads.
+    Result<ToolTable> inch = parse_tool_tbl("T1 D1e308\n", "tool.tbl", true);
+    ASSERT_FALSE(inch.ok());
+    EXPECT_EQ(first_error(inch.diagnostics()),
+              "tool.tbl:1:4: error: D 1e+308 is beyond the 100000 mm a tool can measure");
 }
 
 TEST(ToolTableFile, MachineFileNamesItsToolFile) {

@@ -38,6 +38,9 @@ struct ToolEntry {
 
 //! Tool numbers run 0..max_tool_number (T0 / H0 / D0 mean "no tool" and "no offset").
 inline constexpr int max_tool_number = 99999999;
+//! Offsets, radii and wear beyond ±100 m are typing errors, not tools; the bound also keeps
+//! geometry plus wear (and an inch table's ×25.4) finite.
+inline constexpr double max_tool_value_mm = 100000.0;
 
 class ToolTable {
 public:
