@@ -46,7 +46,9 @@ for entry in "${targets[@]}"; do
       fi
     done < <(find "$folder" -maxdepth 2 -type f \( -name '*.ngc' -o -name '*.nc' -o -name '*.toml' -o -name '*.tbl' \) -size -64k -print0)
   done
-  args=(-max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1
+  # A fixed seed (FUZZ_SEED, default 1) makes a run repeatable: what passes here passes in CI,
+  # give another seed to explore further.
+  args=(-seed="${FUZZ_SEED:-1}" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1
         -artifact_prefix="$work/$name.findings/")
   [[ -n $dict ]] && args+=(-dict="$dict")
   log="$work/$name.log"
