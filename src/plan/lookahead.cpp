@@ -226,7 +226,7 @@ void Lookahead::commit_front(double v_end) {
         const bool last = i + 1 == run.count;
         const double end_mm = offset_mm + s.path.length;
         const double end_s = last ? total_s : std::max(offset_s, walker.time_at(end_mm));
-        TrajectoryPiece piece;
+        TrajectoryPiece& piece = output_.push_back_slot();
         piece.kind = PieceKind::motion;
         piece.profile = profile;
         piece.profile_offset_s = offset_s;
@@ -238,8 +238,9 @@ void Lookahead::commit_front(double v_end) {
         piece.sequence_number = s.sequence_number;
         piece.blend = s.blend;
         piece.segment = s.path;
+        piece.io = Io{};
+        piece.waits_for_index = false;
         clock_s_ = run_start_s + end_s;
-        output_.push_back(std::move(piece));
         if (!s.after.empty()) {
             const AxisVector end = end_point(s.path);
             for (const WindowEvent& event : s.after) emit_event(event, end);

@@ -31,6 +31,13 @@ public:
         ++size_;
     }
     void push_back(const T& value) { push_back(T(value)); }
+    //! The slot a push_back would fill, now counted in: it holds a stale (moved-from) value that
+    //! the caller must overwrite field by field. Saves building a large value and moving it in.
+    T& push_back_slot() {
+        if (size_ == slots_.size()) grow();
+        ++size_;
+        return back();
+    }
     void pop_front() {
         head_ = (head_ + 1) & mask_;
         --size_;

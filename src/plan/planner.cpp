@@ -1,6 +1,7 @@
 // The Planner: turns Moves into window segments, deciding each junction (stop, pass, blend).
 #include "nckit/plan/planner.hpp"
 
+#include <array>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -51,7 +52,10 @@ struct Planner::Impl {
     PlannerOptions options;
     ProfileKind kind;
     plan_detail::Lookahead lookahead;
-    std::optional<Pending> pending;
+    //! Two slots the pending motion and the next one alternate in: a Pending holds a whole
+    //! transition (about 2 kB), which moving from a local into an optional cost on every move.
+    std::array<Pending, 2> slots;
+    Pending* pending = nullptr;  //!< one of slots, or none
     std::vector<WindowEvent> pending_events;
     AxisVector position;  //!< where the path added so far ends
     bool have_position = false;            //!< a motion has told where the machine is
@@ -97,10 +101,29 @@ struct Planner::Impl {
             for (WindowEvent& e : pending_events) lookahead.add_event(std::move(e), position);
         }
         pending_events.clear();
-        pending.reset();
+        pending = nullptr;
     }
 
-    void connect(Pending&& next) {
+    //! The slot the pending motion is not in, emptied for the next motion (its path is the
+    //! caller's to set).
+    Pending& fresh_slot() {
+        Pending& s = pending == &slots[0] ? slots[1] : slots[0];
+        s.full_length = 0;
+        s.limits.reset();
+        s.normal_share = 0.5;
+        s.feed_mm_s = 0;
+        s.blendable = false;
+        s.control = PathControl{};
+        s.where = SourceLocation{};
+        s.sequence_number = -1;
+        s.entry.reset();
+        s.entry_feed_mm_s = 0;
+        s.entry_where = SourceLocation{};
+        s.entry_number = -1;
+        return s;
+    }
+
+    void connect(Pending& next) {
         if (pending) {
             Pending& p = *pending;
             // Trapezoids may step the acceleration, so only the direction must be continuous;
@@ -123,7 +146,7 @@ struct Planner::Impl {
                 release_pending(0.0);
             }
         }
-        pending = std::move(next);
+        pending = &next;
     }
 
     //! Trapezoid plans round a corner between two lines with a circular arc.
@@ -219,7 +242,7 @@ struct Planner::Impl {
             return;
         }
         if (!check_axes(path, move.where)) return;
-        Pending next;
+        Pending& next = fresh_slot();
         // A trapezoid arc runs at constant speed where it is slowest: like a blend, it gives most
         // of the acceleration to the turning (the rest still changes speed along it).
         const double share = kind == ProfileKind::trapezoid && path.shape == SegmentShape::arc
@@ -233,7 +256,7 @@ struct Planner::Impl {
         next.control = control;
         next.where = move.where;
         next.sequence_number = move.sequence_number;
-        connect(std::move(next));
+        connect(next);
     }
 
     //! The machine is at `from` (the start of a motion).
@@ -309,7 +332,7 @@ struct Planner::Impl {
             wait.sequence_number = move.sequence_number;
             event(std::move(wait), true);
         }
-        Pending next;
+        Pending& next = fresh_slot();
         next.limits = limits;
         next.full_length = path.length;
         next.path = std::move(path);
@@ -317,7 +340,7 @@ struct Planner::Impl {
         next.blendable = false;
         next.where = move.where;
         next.sequence_number = move.sequence_number;
-        connect(std::move(next));
+        connect(next);
         last_motion_sync = true;
     }
 
