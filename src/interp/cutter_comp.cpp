@@ -32,10 +32,12 @@ CompError CutterCompensator::error(const SourceLocation& where, std::string code
     return CompError{where, std::move(code), std::move(message)};
 }
 
-void CutterCompensator::start(CompSide side, double radius_mm, Plane plane) {
+void CutterCompensator::start(CompSide side, double radius_mm, Plane plane, const AxisVector& tip_shift) {
     // G41 again before the exit move: the tool is still beside the old contour, and the next
     // move leaves from there.
     leave_from_tool_ = mode_ == Mode::exiting;
+    if (leave_from_tool_) tool_ = tool_ + tip_shift_;  // where the tool really stands
+    tip_shift_ = tip_shift;
     mode_ = Mode::waiting;
     side_ = side == CompSide::left ? 1 : -1;
     radius_mm_ = radius_mm;
@@ -70,10 +72,10 @@ std::optional<CompError> CutterCompensator::add(Move move, std::vector<Move>& ou
                              "the move after G40 must be a straight line (G0/G1), not an arc");
             }
             if (auto* line = std::get_if<Line>(&move.what)) {
-                line->from = tool_;  // from r beside the contour to the programmed point
+                line->from = tool_ + tip_shift_;  // from r beside the contour to the programmed point
                 mode_ = Mode::off;
             } else if (auto* sync = std::get_if<SyncMove>(&move.what)) {
-                sync->from = tool_;
+                sync->from = tool_ + tip_shift_;
                 mode_ = Mode::off;
             }
             out.push_back(std::move(move));
@@ -181,10 +183,26 @@ std::optional<CompError> CutterCompensator::release(std::vector<Move>& out) {
     if (has_before_ && !held_start_up_) {
         if (auto e = check_clearance(before_.segment(), held_.front().where, "the block before it")) return e;
     }
-    for (Move& m : held_) out.push_back(std::move(m));
-    held_.clear();
+    emit_held(out);
     held_start_up_ = false;
     return std::nullopt;
+}
+
+void CutterCompensator::emit_held(std::vector<Move>& out) {
+    for (std::size_t i = 0; i < held_.size(); ++i) emit(std::move(held_[i]), i == 0 && held_start_up_, out);
+    held_.clear();
+}
+
+void CutterCompensator::emit(Move move, bool keep_start, std::vector<Move>& out) const {
+    if (auto* line = std::get_if<Line>(&move.what)) {
+        if (!keep_start) line->from = line->from + tip_shift_;
+        line->to = line->to + tip_shift_;
+    } else if (auto* arc = std::get_if<Arc>(&move.what)) {
+        arc->from = arc->from + tip_shift_;
+        arc->to = arc->to + tip_shift_;
+        arc->center = arc->center + tip_shift_;
+    }
+    out.push_back(std::move(move));
 }
 
 std::optional<CompError> CutterCompensator::cancel(std::vector<Move>& out) {

@@ -176,8 +176,7 @@ std::optional<CompError> CutterCompensator::next_planar(Move move, std::vector<M
         }
     }
     set_in_plane(tool_, p, a_end);
-    for (Move& m : held_) out.push_back(std::move(m));
-    held_.clear();
+    emit_held(out);
 
     if (around) {
         // The tool rolls around the programmed corner point: an arc of radius r, or for a
@@ -205,7 +204,7 @@ std::optional<CompError> CutterCompensator::next_planar(Move move, std::vector<M
             }
             turn.what = arc;
         }
-        out.push_back(std::move(turn));
+        emit(std::move(turn), false, out);
         set_in_plane(tool_, p, b_start);
     }
 

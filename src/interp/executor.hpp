@@ -147,9 +147,12 @@ private:
     std::optional<Diagnostic> lathe_single_cycle(std::vector<Move>& out);
     std::optional<Diagnostic> lathe_repetitive_cycle(std::vector<Move>& out);
     std::optional<Diagnostic> lathe_cycle_settings();  //!< the first blocks of G71/G72/G73
-    //! Runs the P-Q blocks from the current position on a copy of this executor: their moves.
-    std::optional<Diagnostic> run_sequence(std::int64_t p, std::int64_t q, std::size_t& approach_moves,
-                                           std::vector<Move>& moves);
+    //! Runs the blocks N p .. N q of the block's P and Q words from the current position on a
+    //! copy of this executor: their moves, and the letters of the P block's words.
+    std::optional<Diagnostic> run_pq_blocks(struct PqShape& shape);
+    //! G71/G72 type II: the roughing levels that follow pockets (lathe_rough_pockets.cpp).
+    std::optional<Diagnostic> rough_pocket_levels(const struct RoughLevels& plan, const std::vector<Move>& moved,
+                                                  std::vector<Move>& out);
     std::optional<Diagnostic> finish_cycle(std::vector<Move>& out);
     std::optional<Diagnostic> rough_cycle(std::vector<Move>& out);
     std::optional<Diagnostic> pattern_cycle(std::vector<Move>& out);
@@ -184,6 +187,7 @@ private:
     CutterCompensator comp_;
     CompSide comp_side_ = CompSide::left;  //!< from check_cutter_comp() for this block's G41/G42
     double comp_radius_mm_ = 0;            //!< likewise, mm
+    AxisVector comp_tip_shift_;  //!< a lathe tool's imaginary tip less its nose centre (G41/G42), mm
 
     SequenceReader sequence_reader_;
     bool skip_past_sequence_ = false;

@@ -15,6 +15,20 @@ bool starts_comp(GCode code) { return code == g(41) || code == g(42) || code == 
 
 Diagnostic to_diagnostic(const CompError& e) { return error_at(e.where, e.code, e.message); }
 
+//! Where a lathe tool's imaginary tip (the point its X and Z offsets measure) lies from its nose
+//! centre, by Fanuc's tip orientation: X+ away from the spindle axis, Z+ away from the chuck.
+//! 3 is an outside turning tool (tip below and towards the chuck), 2 a boring bar; 0 and 9 are
+//! the nose centre itself.
+AxisVector tip_shift(int orientation, double radius_mm) {
+    static constexpr int x_side[10] = {0, 1, 1, -1, -1, 0, 1, 0, -1, 0};
+    static constexpr int z_side[10] = {0, 1, -1, -1, 1, 1, 0, -1, 0, 0};
+    AxisVector shift;
+    if (orientation < 0 || orientation > 9) return shift;
+    shift[Axis::X] = x_side[orientation] * radius_mm;
+    shift[Axis::Z] = z_side[orientation] * radius_mm;
+    return shift;
+}
+
 }  // namespace
 
 bool Executor::block_starts_comp() const { return starts_comp(words_.group(ModalGroup::cutter_comp)); }
@@ -58,6 +72,7 @@ std::optional<Diagnostic> Executor::check_cutter_comp() {
     if (!starts_comp(code)) return std::nullopt;
 
     comp_side_ = (code == g(41) || code == g(41, 1)) ? CompSide::left : CompSide::right;
+    comp_tip_shift_ = AxisVector{};
     const Word* d = words_.word('D');
     if (code == g(41, 1) || code == g(42, 1)) {
         if (d == nullptr) {
@@ -89,13 +104,8 @@ std::optional<Diagnostic> Executor::check_cutter_comp() {
         }
         comp_radius_mm_ = *radius;
         const ToolEntry* entry = tools_.find(number);
-        if (machine_.gcode_system != GCodeSystem::none && comp_radius_mm_ != 0 && entry != nullptr &&
-            entry->orientation != 0 && entry->orientation != 9) {
-            // The path of the nose centre is right; the shift from the centre to an imaginary
-            // tip (orientations 1-8) is not applied, so such a tool is refused, not cut wrongly.
-            return error(code_column, "unsupported-cycle",
-                         fmt::format("nose radius compensation for tip orientation {} is not supported "
-                                     "(0 or 9: the nose centre is programmed)", entry->orientation));
+        if (machine_.gcode_system != GCodeSystem::none && entry != nullptr) {
+            comp_tip_shift_ = tip_shift(entry->orientation, std::abs(comp_radius_mm_));
         }
     }
     // A negative offset cuts on the other side, as on Fanuc and LinuxCNC controls.
@@ -121,7 +131,11 @@ std::optional<Diagnostic> Executor::compensate(std::vector<Move>& out, std::size
     } else if (starts_comp(code)) {
         modal_.cutter_comp = code / 10;
         // A zero radius compensates nothing: the moves go out as programmed.
-        if (comp_radius_mm_ > 0) comp_.start(comp_side_, comp_radius_mm_, modal_.plane);
+        if (comp_radius_mm_ > 0) {
+            // The imaginary tip shift applies in the lathe plane only (G18), as on the controls.
+            comp_.start(comp_side_, comp_radius_mm_, modal_.plane,
+                        modal_.plane == Plane::zx ? comp_tip_shift_ : AxisVector{});
+        }
     }
     for (Move& move : block_moves) {
         if (auto e = comp_.add(std::move(move), out)) return to_diagnostic(*e);

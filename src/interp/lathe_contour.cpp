@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 #include "nckit/interp/arc_geometry.hpp"
 
@@ -82,6 +83,46 @@ std::optional<double> level_crossing(const Move& element, ContourAxes axes, doub
         }
     }
     return best;
+}
+
+std::vector<double> level_crossings(const Move& element, ContourAxes axes, double level) {
+    std::vector<double> found;
+    if (const auto* line = std::get_if<Line>(&element.what)) {
+        const double d0 = line->from[axes.depth];
+        const double d1 = line->to[axes.depth];
+        if ((level - d0) * (level - d1) > 0) return found;
+        if (d0 == d1) return {line->from[axes.length], line->to[axes.length]};
+        const double t = (level - d0) / (d1 - d0);
+        found.push_back(line->from[axes.length] + t * (line->to[axes.length] - line->from[axes.length]));
+        return found;
+    }
+    const auto* arc = std::get_if<Arc>(&element.what);
+    if (arc == nullptr) return found;
+    const double radius = arc_start_radius(*arc);
+    const double offset = level - arc->center[axes.depth];
+    if (std::abs(offset) > radius) return found;
+    const double half = std::sqrt(std::max(0.0, radius * radius - offset * offset));
+    const double sweep = arc_sweep_rad(*arc);
+    std::vector<std::pair<double, double>> on_arc;  // (angle from the start, length)
+    for (double sign : {-1.0, 1.0}) {
+        AxisVector point = arc->center;
+        point[axes.depth] = level;
+        point[axes.length] = arc->center[axes.length] + sign * half;
+        double delta = angle_from_start(*arc, angle_in_plane(*arc, point));
+        if (delta > two_pi - on_arc_rad) delta = 0;
+        if (delta <= sweep + on_arc_rad) on_arc.emplace_back(delta, point[axes.length]);
+    }
+    std::sort(on_arc.begin(), on_arc.end());
+    for (const auto& [delta, length] : on_arc) found.push_back(length);
+    return found;
+}
+
+std::optional<double> depth_at(const std::vector<Move>& shape, ContourAxes axes, double length) {
+    const ContourAxes across{axes.length, axes.depth};
+    for (const Move& element : shape) {
+        if (auto d = level_crossing(element, across, length)) return d;
+    }
+    return std::nullopt;
 }
 
 Extent extent_along(const Move& element, Axis axis) {

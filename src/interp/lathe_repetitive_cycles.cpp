@@ -82,8 +82,7 @@ std::optional<Diagnostic> Executor::lathe_cycle_settings() {
     return std::nullopt;
 }
 
-std::optional<Diagnostic> Executor::run_sequence(std::int64_t p, std::int64_t q, std::size_t& approach_moves,
-                                                 std::vector<Move>& moves) {
+std::optional<Diagnostic> Executor::run_pq_blocks(PqShape& shape) {
     const Word* p_word = words_.word('P');
     const Word* q_word = words_.word('Q');
     for (const Word* word : {p_word, q_word}) {
@@ -92,7 +91,8 @@ std::optional<Diagnostic> Executor::run_sequence(std::int64_t p, std::int64_t q,
         }
     }
     std::vector<Block> blocks;
-    if (auto e = sequence_reader_(p, q, blocks)) {
+    if (auto e = sequence_reader_(static_cast<std::int64_t>(p_word->value), static_cast<std::int64_t>(q_word->value),
+                                  blocks)) {
         if (e->location.file == nullptr) {
             // Fanuc alarm PS0063: the block P or Q names is not in the program.
             const Word* missing = e->message.find("after") != std::string::npos ? q_word : p_word;
@@ -100,17 +100,20 @@ std::optional<Diagnostic> Executor::run_sequence(std::int64_t p, std::int64_t q,
         }
         return e;
     }
-    Executor shape(*this);
-    shape.sequence_reader_ = nullptr;  // a cycle inside the shape is an error there
-    shape.modal_.lathe.single = LatheSingleCycle{};
-    approach_moves = 0;
+    Executor runner(*this);
+    runner.sequence_reader_ = nullptr;  // a cycle inside the shape is an error there
+    runner.modal_.lathe.single = LatheSingleCycle{};
+    shape = PqShape{};
+    if (!blocks.empty()) {
+        for (const Word& word : blocks.front().words) shape.p_letters.push_back(word.letter);
+    }
     for (std::size_t i = 0; i < blocks.size(); ++i) {
         bool program_end = false;
-        if (auto e = shape.run(blocks[i], moves, program_end)) return e;
+        if (auto e = runner.run(blocks[i], shape.moves, program_end)) return e;
         if (program_end) return error_at(blocks[i].location, "bad-cycle", "M2/M30 inside a cycle's P-Q blocks");
-        if (i == 0) approach_moves = moves.size();
+        if (i == 0) shape.approach_moves = shape.moves.size();
     }
-    return shape.end_program(moves);
+    return runner.end_program(shape.moves);
 }
 
 std::optional<Diagnostic> Executor::feed_arc(Arc arc, std::vector<Move>& out) {
@@ -125,13 +128,9 @@ std::optional<Diagnostic> Executor::feed_arc(Arc arc, std::vector<Move>& out) {
 
 std::optional<Diagnostic> Executor::finish_cycle(std::vector<Move>& out) {
     const AxisVector start = position_;
-    std::size_t approach = 0;
-    std::vector<Move> shape;
-    if (auto e = run_sequence(static_cast<std::int64_t>(words_.word('P')->value),
-                              static_cast<std::int64_t>(words_.word('Q')->value), approach, shape)) {
-        return e;
-    }
-    for (Move& move : shape) {
+    PqShape shape;
+    if (auto e = run_pq_blocks(shape)) return e;
+    for (Move& move : shape.moves) {
         if (auto end = move_end(move)) position_ = *end;
         if (const auto* sync = std::get_if<SyncMove>(&move.what)) position_ = sync->to;
         out.push_back(std::move(move));
@@ -150,12 +149,10 @@ std::optional<Diagnostic> Executor::pattern_cycle(std::vector<Move>& out) {
     AxisVector allowance;
     if (const Word* u = cycle_word('U')) allowance[Axis::X] = axis_value(Axis::X, *u);
     if (const Word* w = cycle_word('W')) allowance[Axis::Z] = axis_value(Axis::Z, *w);
-    std::size_t approach = 0;
-    std::vector<Move> shape;
-    if (auto e = run_sequence(static_cast<std::int64_t>(words_.word('P')->value),
-                              static_cast<std::int64_t>(words_.word('Q')->value), approach, shape)) {
-        return e;
-    }
+    PqShape pq;
+    if (auto e = run_pq_blocks(pq)) return e;
+    const std::vector<Move>& shape = pq.moves;
+    const std::size_t approach = pq.approach_moves;
     const Line* in = nullptr;  // the P block's move, its S T M events aside
     for (std::size_t i = 0; i < approach; ++i) {
         if (const auto* line = std::get_if<Line>(&shape[i].what)) in = line;

@@ -1,11 +1,15 @@
 // Stock removal G71 (turning: levels of X, cuts along Z) and G72 (facing: levels of Z, cuts along
-// X), type I: the finishing shape N p .. N q runs one way in both axes. With A the start point,
-// A' where the P block goes and the shape moved by the finishing allowance (U/2 in X as a
-// radius, W in Z), each pass goes in from A by the depth of cut (G71 U / G72 W), cuts along the
-// length axis until it meets the moved shape, escapes at 45 degrees by R and returns at rapid.
-// When the next level would pass A' (moved), a last pass follows the moved shape from A' to its
-// end, which leaves exactly the allowance for G70; the tool then returns to A at rapid. Rapids
-// at the end of the shape (a retract in the Q block) are not part of what is roughed.
+// X). With A the start point, A' where the P block goes and the shape moved by the finishing
+// allowance (U/2 in X as a radius, W in Z), the cycle cuts levels from A by the depth of cut
+// (G71 U / G72 W) and ends with a pass along the moved shape, which leaves exactly the allowance
+// for G70; the tool then returns to A at rapid. Rapids at the end of the shape (a retract in the
+// Q block) are not part of what is roughed.
+//   Type I (the P block names only the depth axis, X for G71): the shape runs one way in both
+//   axes; each pass goes in at A's length, cuts until it meets the moved shape, escapes at 45
+//   degrees by R and returns at rapid.
+//   Type II (the P block names both axes): the shape runs one way along the length axis only and
+//   may dip into pockets; each level is cut wherever the moved shape lies below it
+//   (lathe_rough_pockets.cpp).
 #include <cmath>
 
 #include <fmt/format.h>
@@ -43,12 +47,16 @@ std::optional<Diagnostic> Executor::rough_cycle(std::vector<Move>& out) {
     if (w != nullptr) allowance[Axis::Z] = axis_value(Axis::Z, *w);
 
     const AxisVector start = position_;
-    std::size_t approach = 0;
-    std::vector<Move> shape;
-    if (auto e = run_sequence(static_cast<std::int64_t>(words_.word('P')->value),
-                              static_cast<std::int64_t>(words_.word('Q')->value), approach, shape)) {
-        return e;
-    }
+    PqShape pq;
+    if (auto e = run_pq_blocks(pq)) return e;
+    const std::vector<Move>& shape = pq.moves;
+    const std::size_t approach = pq.approach_moves;
+    // Fanuc's rule: the P block that names the length axis (Z or W for G71) makes type II.
+    const char length_word = letter(axes.length);
+    const char length_incremental = facing ? 'U' : 'W';
+    const bool pockets = pq.p_letters.find(length_word) != std::string::npos ||
+                         pq.p_letters.find(length_incremental) != std::string::npos;
+    const char* type = pockets ? "type II" : "type I";
     // The P block's move (its S, T or M events aside: they count only for G70).
     const Line* approach_line = nullptr;
     std::size_t approach_lines = 0;
@@ -63,12 +71,6 @@ std::optional<Diagnostic> Executor::rough_cycle(std::vector<Move>& out) {
         return error(column_of('P'), "bad-cycle", fmt::format("{}: the P block must make one G0 or G1 move", name));
     }
     const Line& in = *approach_line;
-    if (std::abs(in.to[axes.length] - in.from[axes.length]) > flat_mm) {
-        // Type II (pockets) starts with a move in both axes; nckit cuts type I only.
-        return error_at(shape[approach - 1].where, "unsupported-cycle",
-                        fmt::format("{} type II (the P block moves in {} too) is not supported",
-                                    name, letter(axes.length)));
-    }
     std::vector<Move> profile;
     for (std::size_t i = approach; i < shape.size(); ++i) {
         if (std::holds_alternative<SyncMove>(shape[i].what)) {
@@ -110,18 +112,18 @@ std::optional<Diagnostic> Executor::rough_cycle(std::vector<Move>& out) {
         const Extent l = extent_along(element, axes.length);
         const double step_l = to[axes.length] - from[axes.length];
         if (along == 0 && std::abs(step_l) > flat_mm) along = sign_of(step_l);
-        const bool d_ok = up * (to[axes.depth] - from[axes.depth]) >= -flat_mm &&
-                          d.low >= std::min(from[axes.depth], to[axes.depth]) - flat_mm &&
-                          d.high <= std::max(from[axes.depth], to[axes.depth]) + flat_mm;
+        const bool d_ok = pockets || (up * (to[axes.depth] - from[axes.depth]) >= -flat_mm &&
+                                      d.low >= std::min(from[axes.depth], to[axes.depth]) - flat_mm &&
+                                      d.high <= std::max(from[axes.depth], to[axes.depth]) + flat_mm);
         const bool l_ok = along * step_l >= -flat_mm &&
                           l.low >= std::min(from[axes.length], to[axes.length]) - flat_mm &&
                           l.high <= std::max(from[axes.length], to[axes.length]) + flat_mm;
         if (!d_ok || !l_ok) {
+            const std::string one_way = pockets ? std::string(1, letter(axes.length))
+                                                : fmt::format("{} and in {}", letter(axes.depth), letter(axes.length));
             return error_at(element.where, "bad-cycle",
-                            fmt::format("{} type I: the finishing shape must run one way in {} and in {} "
-                                        "(this block turns back in {})",
-                                        name, letter(axes.depth), letter(axes.length),
-                                        letter(d_ok ? axes.length : axes.depth)));
+                            fmt::format("{} {}: the finishing shape must run one way in {} (this block turns back in {})",
+                                        name, type, one_way, letter(d_ok ? axes.length : axes.depth)));
         }
     }
     if (along == 0) {
@@ -130,7 +132,15 @@ std::optional<Diagnostic> Executor::rough_cycle(std::vector<Move>& out) {
     }
     std::vector<Move> moved;
     for (const Move& element : profile) moved.push_back(shifted(element, allowance));
-    const double floor_d = in.to[axes.depth] + allowance[axes.depth];
+    // The deepest point of the moved shape: where the P block goes for type I, the bottom of the
+    // deepest pocket for type II.
+    double floor_d = in.to[axes.depth] + allowance[axes.depth];
+    if (pockets) {
+        for (const Move& element : moved) {
+            const Extent d = extent_along(element, axes.depth);
+            floor_d = up > 0 ? std::min(floor_d, d.low) : std::max(floor_d, d.high);
+        }
+    }
     const double end_l = (*move_end(moved.back()))[axes.length];
     const double level_count = std::floor((a_d - floor_d) * up / depth_mm - flat_mm);
     if ((a_d - floor_d) * up <= flat_mm) {
@@ -152,7 +162,11 @@ std::optional<Diagnostic> Executor::rough_cycle(std::vector<Move>& out) {
         return p;
     };
     const double escape = settings.retract_mm;
-    for (int k = 1; k <= levels; ++k) {
+    if (pockets) {
+        const RoughLevels plan{axes, up, along, a_d, a_l, depth_mm, escape, levels, in.rapid};
+        if (auto e = rough_pocket_levels(plan, moved, out)) return e;
+    }
+    for (int k = 1; k <= (pockets ? 0 : levels); ++k) {
         const double level = a_d - up * k * depth_mm;
         double cut_end = end_l;
         for (const Move& element : moved) {
@@ -170,7 +184,7 @@ std::optional<Diagnostic> Executor::rough_cycle(std::vector<Move>& out) {
         if (auto e = straight(g(0), point(position_[axes.depth], a_l), out)) return e;
     }
     // The last pass: along the shape moved by the allowance.
-    if (auto e = straight(infeed, point(floor_d, a_l + allowance[axes.length]), out)) return e;
+    if (auto e = straight(infeed, *move_start(moved.front()), out)) return e;
     for (const Move& element : moved) {
         if (const auto* line = std::get_if<Line>(&element.what)) {
             if (auto e = straight(line->rapid ? g(0) : g(1), line->to, out)) return e;

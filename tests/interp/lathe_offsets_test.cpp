@@ -145,10 +145,5 @@ TEST(LatheNoseRadius, G42OffsetsTaperAndArcByTheNoseRadius) {
     EXPECT_NEAR(std::hypot(arcs[1].to[Axis::X] - 30.0, arcs[1].to[Axis::Z] + 20.0), 9.6, 1e-9);
 }
 
-TEST(LatheNoseRadius, TipOrientationsOneToEightAreRefused) {
-    EXPECT_EQ(error_where("T0202\nG0 X60. Z5.\nG42 G1 X20. Z2. F0.2\nG1 Z-10.\n", lathe_with_noses()),
-              "unsupported-cycle 3:1");
-}
-
 }  // namespace
 }  // namespace nckit::test

@@ -37,7 +37,9 @@ public:
     [[nodiscard]] bool on() const { return mode_ == Mode::waiting || mode_ == Mode::on; }
 
     //! G41/G42 with radius r (> 0, mm): the next move in `plane` starts the compensation.
-    void start(CompSide side, double radius_mm, Plane plane);
+    //! `tip_shift` (a lathe tool's imaginary tip less its nose centre, mm) moves the compensated
+    //! path, whose points are nose centres, onto the point the offsets measure.
+    void start(CompSide side, double radius_mm, Plane plane, const AxisVector& tip_shift = AxisVector{});
     //! G40: the held move ends r from the contour, perpendicular to its end, and goes out; the
     //! next move runs straight from there to its programmed end point (it must be a line).
     [[nodiscard]] std::optional<CompError> cancel(std::vector<Move>& out);
@@ -70,6 +72,9 @@ private:
     std::optional<CompError> check_clearance(const interp::comp::Segment& element, const SourceLocation& where,
                                              const char* which) const;
     void hold_off_plane(Move move);
+    //! Sends the held moves out, moved by the tip shift (the start-up move's start stays).
+    void emit_held(std::vector<Move>& out);
+    void emit(Move move, bool keep_start, std::vector<Move>& out) const;
     [[nodiscard]] bool moves_in_plane(const Move& move) const;
     [[nodiscard]] CompError error(const SourceLocation& where, std::string code, std::string message) const;
 
@@ -78,7 +83,8 @@ private:
     int side_ = 1;          //!< +1 left (G41), -1 right (G42)
     double radius_mm_ = 0;
     Plane plane_ = Plane::xy;
-    AxisVector tool_;       //!< where the tool is after everything held, mm / deg
+    AxisVector tool_;       //!< where the tool is after everything held (nose centre), mm / deg
+    AxisVector tip_shift_;  //!< imaginary tip less nose centre of a lathe tool, mm
     Programmed programmed_; //!< the held planar move as programmed
     Programmed before_;     //!< the planar move before it, as programmed
     bool has_before_ = false;  //!< before_ is a contour move (not the start-up move)
