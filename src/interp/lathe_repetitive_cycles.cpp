@@ -111,9 +111,19 @@ std::optional<Diagnostic> Executor::run_pq_blocks(PqShape& shape) {
         bool program_end = false;
         if (auto e = runner.run(blocks[i], shape.moves, program_end)) return e;
         if (program_end) return error_at(blocks[i].location, "bad-cycle", "M2/M30 inside a cycle's P-Q blocks");
-        if (i == 0) shape.approach_moves = shape.moves.size();
     }
-    return runner.end_program(shape.moves);
+    if (auto e = runner.end_program(shape.moves)) return e;
+    // The P block's moves lead; counted by their block, since nose radius compensation holds a
+    // block's move back until the next block settles its corner.
+    if (!blocks.empty()) {
+        const SourceLocation& p_block = blocks.front().location;
+        while (shape.approach_moves < shape.moves.size() &&
+               shape.moves[shape.approach_moves].where.line == p_block.line &&
+               shape.moves[shape.approach_moves].where.file_name() == p_block.file_name()) {
+            ++shape.approach_moves;
+        }
+    }
+    return std::nullopt;
 }
 
 std::optional<Diagnostic> Executor::feed_arc(Arc arc, std::vector<Move>& out) {

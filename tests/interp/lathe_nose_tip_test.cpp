@@ -190,7 +190,11 @@ TEST(LatheNoseTip, RandomProfilesTheNoseTouchesEveryBlock) {
             if (m.where.line < 4 || m.where.line >= 4 + points.size() - 1) continue;
             std::vector<AxisVector> samples;
             if (const auto* l = std::get_if<Line>(&m.what)) {
-                for (int k = 0; k <= 10; ++k) samples.push_back(l->from + (k / 10.0) * (l->to - l->from));
+                for (int k = 0; k <= 10; ++k) {
+                    AxisVector p = l->from;
+                    for (Axis axis : {Axis::X, Axis::Z}) p[axis] += k / 10.0 * (l->to[axis] - l->from[axis]);
+                    samples.push_back(p);
+                }
                 // The block's own move ends with the nose touching its programmed segment.
                 const std::size_t block = m.where.line - 4;  // segment points[block] -> points[block + 1]
                 const double r = l->to[Axis::X] - sr;
@@ -207,8 +211,11 @@ TEST(LatheNoseTip, RandomProfilesTheNoseTouchesEveryBlock) {
                 // A corner arc turns about the programmed corner: its centre less the shift.
                 EXPECT_NEAR(nearest(a->center[Axis::X] - sr, a->center[Axis::Z] - sz), 0.0, 1e-6);
             }
+            // Corners within 0.05 rad count as tangent (docs/cutter-compensation.md): the next
+            // move starts where the last one ended, up to R (1 - cos 0.05) nearer its own segment.
             for (const AxisVector& p : samples) {
-                EXPECT_GE(nearest(p[Axis::X] - sr, p[Axis::Z] - sz), nose_mm - 1e-6) << "line " << m.where.line;
+                EXPECT_GE(nearest(p[Axis::X] - sr, p[Axis::Z] - sz), nose_mm * std::cos(0.05) - 1e-6)
+                    << "line " << m.where.line;
             }
         }
     }
