@@ -88,6 +88,41 @@ TEST(LathePockets, TypeIIErrors) {
               "bad-cycle 6:1");
 }
 
+TEST(LathePockets, G72TypeIIFacesAPocketInZ) {
+    // G72: levels of Z every 2 mm from Z2, cuts along X. The P block names X and Z (type II);
+    // the shape runs inward in X, (r40,Z-10) (r30,Z-10) (r25,Z-14) (r15,Z-14) (r10,Z-6) (r0,Z-6),
+    // with a pocket 4 mm deeper between r25 and r15. Levels 0 -2 ... -12; below Z-10 only the
+    // pocket is cut: at Z-12 from r27.5 (the outer wall) to r13.75 (the inner wall).
+    const std::string program =
+        "G0 X90. Z2.\nG72 W2. R0.5\nG72 P10 Q20 U0 W0 F0.2\n"
+        "N10 G0 X80. Z-10.\nG1 X60.\nX50. Z-14.\nX30.\nX20. Z-6.\nN20 X0.\nM30\n";
+    auto profile_z = [](double r) {
+        const double pts[][2] = {{40, -10}, {30, -10}, {25, -14}, {15, -14}, {10, -6}, {0, -6}};
+        for (int i = 1; i < 6; ++i) {
+            if (r <= pts[i - 1][0] && r >= pts[i][0]) {
+                return pts[i - 1][1] + (r - pts[i - 1][0]) / (pts[i][0] - pts[i - 1][0]) * (pts[i][1] - pts[i - 1][1]);
+            }
+        }
+        return -1e9;  // off the shape
+    };
+    bool pocket_cut = false;
+    for (const Move& m : moves_of(program, system_a_lathe())) {
+        const auto* l = std::get_if<Line>(&m.what);
+        if (l == nullptr || m.where.line != 3) continue;
+        for (int k = 0; k <= 20; ++k) {
+            const double r = l->from[Axis::X] + k / 20.0 * (l->to[Axis::X] - l->from[Axis::X]);
+            const double z = l->from[Axis::Z] + k / 20.0 * (l->to[Axis::Z] - l->from[Axis::Z]);
+            ASSERT_GE(z, profile_z(r) - 1e-9) << "r" << r << " Z" << z;
+        }
+        if (!l->rapid && l->from[Axis::Z] == -12 && l->to[Axis::Z] == -12) {
+            EXPECT_NEAR(l->from[Axis::X], 27.5, 1e-9);
+            EXPECT_NEAR(l->to[Axis::X], 13.75, 1e-9);
+            pocket_cut = true;
+        }
+    }
+    EXPECT_TRUE(pocket_cut);
+}
+
 //! A random pocket shape: radius as a function of Z, one way in Z, down and up in X.
 struct PocketCase {
     std::vector<std::pair<double, double>> shape;  // (z, r), A' first
