@@ -54,8 +54,9 @@ Case random_case(std::mt19937& rng) {
                                    num(2 * c.start_r), num(c.depth), num(c.escape), num(c.u), num(c.w));
     for (std::size_t i = 0; i < c.shape.size(); ++i) {
         const std::string n = i == 0 ? "N10 " : i + 1 == c.shape.size() ? "N20 " : "";
-        text += fmt::format("{}{} X{} Z{}{}\n", n, i == 0 ? "G0" : "G1", num(2 * c.shape[i].r), num(c.shape[i].z),
-                            i == 1 ? " F0.1" : "");
+        // The P block names X only (A' lies at A's Z2): type I. Naming Z too would make type II.
+        const std::string z = i == 0 ? std::string() : " Z" + num(c.shape[i].z);
+        text += fmt::format("{}{} X{}{}{}\n", n, i == 0 ? "G0" : "G1", num(2 * c.shape[i].r), z, i == 1 ? " F0.1" : "");
     }
     text += "G70 P10 Q20\nM30\n";
     c.program = text;
