@@ -14,6 +14,7 @@ from pathlib import Path
 
 from cli_checks import check, summary
 
+REPORT_LINE = re.compile(r"nckit report: ([\d,]+) blocks, ([\d,]+) blocks/s, (\d+) %, (\d+) s left\x1b\[K")
 LINE = re.compile(r"nckit steps: ([\d,]+) blocks, ([\d,]+) blocks/s, (\d+) %, (\d+) s left\x1b\[K")
 
 
@@ -68,6 +69,15 @@ def main() -> int:
         plain = subprocess.run([nckit, "steps", str(program), "--text"], stdout=subprocess.DEVNULL,
                                stderr=subprocess.PIPE, timeout=300)
         check(plain.returncode == 0 and plain.stderr == b"", f"stderr not a terminal: silent ({plain.stderr[:200]!r})")
+        # nckit report draws the same line while it plans, and --quiet silences it.
+        page = Path(tmp) / "long.html"
+        status, seen = stderr_on_terminal(nckit, "report", program, "-o", page)
+        report_lines = REPORT_LINE.findall(seen)
+        check(status == 0 and page.is_file(), f"report wrote its page ({status}: {seen[-300:]!r})")
+        check(len(report_lines) >= 1 and seen.rstrip("\r\n").endswith("\r\x1b[K"),
+              f"report: the progress line is drawn and cleared ({len(report_lines)} times: {seen[:200]!r})")
+        status, seen = stderr_on_terminal(nckit, "report", program, "-o", page, "--quiet")
+        check(status == 0 and seen.strip() == "", f"report --quiet: nothing on the terminal ({seen[:200]!r})")
     return summary()
 
 

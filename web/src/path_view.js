@@ -28,7 +28,22 @@ export function createPathView(container, path, onPick) {
   const centre = min.map((m, k) => (m + max[k]) / 2);
   const size = Math.max(1e-3, ...max.map((m, k) => m - min[k]));
 
-  // One primitive per pair of consecutive vertices; each remembers its move.
+  // Every vertex once, relative to the centre, coloured by its planned speed (a 256-entry table:
+  // the page stores the speed as a byte). Feed moves index pairs of these vertices, so a vertex
+  // shared by two segments is stored once; each pair remembers its move for picking.
+  const vertexPos = new Float32Array(vertexCount * 3);
+  for (let i = 0; i < vertexCount; i++) {
+    for (let k = 0; k < 3; k++) vertexPos[3 * i + k] = xyz[3 * i + k] - centre[k];
+  }
+  const ramp = new Uint8Array(256 * 3);
+  const rgb = [0, 0, 0];
+  for (let level = 0; level < 256; level++) {
+    speedColor(level / 255, rgb, 0);
+    for (let k = 0; k < 3; k++) ramp[3 * level + k] = Math.round(255 * rgb[k]);
+  }
+  const vertexCol = new Uint8Array(vertexCount * 3);
+  for (let i = 0; i < vertexCount; i++) vertexCol.set(ramp.subarray(3 * speed[i], 3 * speed[i] + 3), 3 * i);
+
   let feedCount = 0;
   let rapidCount = 0;
   let from = 0;
@@ -38,9 +53,10 @@ export function createPathView(container, path, onPick) {
     else feedCount += n;
     from = vertexEnd[m];
   }
-  const feedPos = new Float32Array(feedCount * 6);
-  const feedCol = new Float32Array(feedCount * 6);
-  const feedMove = new Uint32Array(feedCount);
+  const feedIndex = new Uint32Array(feedCount * 2);
+  // The move of the feed segment that starts at a vertex (picking reports that vertex).
+  const feedMoveOfStart = new Uint32Array(vertexCount);
+  // Rapids stay unindexed: the dashes need each segment's own distances along the line.
   const rapidPos = new Float32Array(rapidCount * 6);
   const rapidMove = new Uint32Array(rapidCount);
   const drawn = new Uint8Array(moveCount);
@@ -51,21 +67,18 @@ export function createPathView(container, path, onPick) {
   for (let m = 0; m < moveCount; m++) {
     const to = vertexEnd[m];
     if (to === from) pointMoves.push(m);
-    for (let v = from; v < to; v++) {
-      const target = moveKind[m] === RAPID ? rapidPos : feedPos;
-      const at = (moveKind[m] === RAPID ? r : f) * 6;
-      for (let k = 0; k < 3; k++) {
-        target[at + k] = xyz[3 * v + k] - centre[k];
-        target[at + 3 + k] = xyz[3 * (v + 1) + k] - centre[k];
-      }
-      if (moveKind[m] === RAPID) {
+    else drawn[m] = 1;
+    if (moveKind[m] === RAPID) {
+      for (let v = from; v < to; v++) {
+        rapidPos.set(vertexPos.subarray(3 * v, 3 * v + 6), 6 * r);
         rapidMove[r++] = m;
-      } else {
-        speedColor(speed[v] / 255, feedCol, at);
-        speedColor(speed[v + 1] / 255, feedCol, at + 3);
-        feedMove[f++] = m;
       }
-      drawn[m] = 1;
+    } else {
+      for (let v = from; v < to; v++) {
+        feedIndex[2 * f++] = v;
+        feedIndex[2 * f - 1] = v + 1;
+        feedMoveOfStart[v] = m;
+      }
     }
     from = to;
   }
@@ -73,10 +86,11 @@ export function createPathView(container, path, onPick) {
   const scene = new THREE.Scene();
   scene.background = new THREE.Color(0xf7f7f4);
   const feedGeometry = new THREE.BufferGeometry();
-  feedGeometry.setAttribute("position", new THREE.BufferAttribute(feedPos, 3));
-  feedGeometry.setAttribute("color", new THREE.BufferAttribute(feedCol, 3));
+  feedGeometry.setAttribute("position", new THREE.BufferAttribute(vertexPos, 3));
+  feedGeometry.setAttribute("color", new THREE.BufferAttribute(vertexCol, 3, true));
+  feedGeometry.setIndex(new THREE.BufferAttribute(feedIndex, 1));
   const feedLines = new THREE.LineSegments(feedGeometry, new THREE.LineBasicMaterial({ vertexColors: true }));
-  feedLines.userData.moveOf = feedMove;
+  feedLines.userData.moveOfHit = (hit) => feedMoveOfStart[hit.index];
   scene.add(feedLines);
   const rapidGeometry = new THREE.BufferGeometry();
   rapidGeometry.setAttribute("position", new THREE.BufferAttribute(rapidPos, 3));
@@ -85,7 +99,7 @@ export function createPathView(container, path, onPick) {
     new THREE.LineDashedMaterial({ color: 0x777777, dashSize: size / 150, gapSize: size / 150 }),
   );
   rapidLines.computeLineDistances();
-  rapidLines.userData.moveOf = rapidMove;
+  rapidLines.userData.moveOfHit = (hit) => rapidMove[hit.index / 2];
   scene.add(rapidLines);
   // Moves that go nowhere (a G1 to where the tool stands) are drawn as points.
   const pointPos = new Float32Array(pointMoves.length * 3);
@@ -97,7 +111,8 @@ export function createPathView(container, path, onPick) {
   const pointGeometry = new THREE.BufferGeometry();
   pointGeometry.setAttribute("position", new THREE.BufferAttribute(pointPos, 3));
   const points = new THREE.Points(pointGeometry, new THREE.PointsMaterial({ color: 0x555555, size: 3, sizeAttenuation: false }));
-  points.userData.moveOf = Uint32Array.from(pointMoves);
+  const pointMove = Uint32Array.from(pointMoves);
+  points.userData.moveOfHit = (hit) => pointMove[hit.index];
   scene.add(points);
 
   // The selected move, 4 px wide over everything (WebGL draws plain lines 1 px wide).
@@ -150,7 +165,9 @@ export function createPathView(container, path, onPick) {
     camera.aspect = w / h;
     highlightMaterial.resolution.set(w, h);
     camera.updateProjectionMatrix();
-    renderNow();
+    // Drawn with the next frame, once: the first layout and the observer's first call both
+    // come here, and on a million moves a frame is the costliest thing the page does.
+    render();
   }
   new ResizeObserver(resize).observe(container);
 
@@ -175,8 +192,7 @@ export function createPathView(container, path, onPick) {
     if (!hits.length) return -1;
     hits.sort((a, b) => a.distanceToRay - b.distanceToRay || a.distance - b.distance);
     const hit = hits[0];
-    const moveOf = hit.object.userData.moveOf;
-    return hit.object === points ? moveOf[hit.index] : moveOf[hit.index / 2];
+    return hit.object.userData.moveOfHit(hit);
   }
 
   function moveRange(m) {

@@ -54,5 +54,11 @@ export async function loadPayload(base64Text) {
     cache.set(name, value);
     return value;
   }
+  //! A text blob as its UTF-8 bytes (no string made of it).
+  blob.bytes = (name) => {
+    const e = header.blobs && header.blobs[name];
+    if (!e || e.type !== "text") throw new Error("page data has no text " + name);
+    return new Uint8Array(buffer, base + e.offset, e.length);
+  };
   return { header, blob, bytes: buffer.byteLength };
 }

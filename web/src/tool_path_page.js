@@ -38,7 +38,7 @@ export function buildToolPathPage(root, header, blob) {
     samples.acc[a] = blob("sample_acc_" + a);
     samples.jerk[a] = blob("sample_jerk_" + a);
   }
-  const sources = tp.files.map((_, i) => blob("source_" + i));
+  const sources = tp.files.map((_, i) => blob.bytes("source_" + i));
   const moveCount = moveKind.length;
   lap("unpack");
 

@@ -20,6 +20,8 @@ try {
     info = await page.evaluate(() => ({
       moves: window.nckitReport.moves,
       drawnSegments: window.nckitReport.drawnSegments,
+      startMs: Math.round(window.nckitReport.startMs),
+      payloadMs: Math.round(window.nckitReport.payloadMs),
       buildMs: Math.round(window.nckitReport.buildMs),
       timings: window.nckitReport.timings,
     }));
