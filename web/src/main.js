@@ -10,7 +10,7 @@ import { el, figureTable } from "./dom.js";
 async function start() {
   const t0 = performance.now();
   const root = document.getElementById("app");
-  const { header, blob, bytes } = await loadPayload(document.getElementById("nckit-data").textContent);
+  const { header, blob, bytes, timings } = await loadPayload(document.getElementById("nckit-data").textContent);
   const payloadMs = performance.now() - t0;
   root.appendChild(el("h1", null, header.title));
   let state = {};
@@ -38,6 +38,7 @@ async function start() {
     charts: header.charts.length,
     startMs: t0,
     payloadMs,
+    payloadTimings: timings,
     buildMs: performance.now() - t0,
   });
 }

@@ -8,6 +8,7 @@ import { LineMaterial } from "three/addons/lines/LineMaterial.js";
 import { speedColor } from "./colors.js";
 
 const RAPID = 0;
+const LARGE_PATH_VERTICES = 200000;
 
 export function createPathView(container, path, onPick) {
   const { moveKind, vertexEnd, xyz, speed, hasY } = path;
@@ -128,7 +129,9 @@ export function createPathView(container, path, onPick) {
   tool.renderOrder = 3;
   scene.add(tool);
 
-  const renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+  // Multisampling smooths the lines but costs every fragment several samples: on a large path
+  // (drawn on the CPU where there is no GPU) it is most of the time to the first frame.
+  const renderer = new THREE.WebGLRenderer({ antialias: vertexCount < LARGE_PATH_VERTICES, preserveDrawingBuffer: true });
   renderer.setPixelRatio(1);
   container.appendChild(renderer.domElement);
   const camera = new THREE.PerspectiveCamera(35, 1, size / 1000, size * 100);

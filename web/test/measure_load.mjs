@@ -22,6 +22,7 @@ try {
       drawnSegments: window.nckitReport.drawnSegments,
       startMs: Math.round(window.nckitReport.startMs),
       payloadMs: Math.round(window.nckitReport.payloadMs),
+      payloadTimings: window.nckitReport.payloadTimings,
       buildMs: Math.round(window.nckitReport.buildMs),
       timings: window.nckitReport.timings,
     }));
