@@ -159,7 +159,13 @@ std::optional<InterpResult> ProgramRunner::fill(std::vector<Move>& pending) {
                 frames_[0].program.line = source().next_line_number();
                 continue;
             }
-            if (block_.words.empty() && block_.statement.kind == StatementKind::none) continue;
+            if (block_.words.empty() && block_.statement.kind == StatementKind::none) {
+                // A block of only a comment does nothing, unless it is an operator message.
+                if (options_.on_message) {
+                    if (auto message = operator_message(block_.comment)) options_.on_message(block_.location, *message);
+                }
+                continue;
+            }
             block = repeating() ? remember(block_) : &block_;
         }
         seen_block_ = true;

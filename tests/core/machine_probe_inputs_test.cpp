@@ -66,8 +66,8 @@ TEST(MachineProbeInputs, WithoutTheTablesNothingIsConfigured) {
 }
 
 TEST(MachineProbeInputsError, SurfaceNeedsAnAxisLetterAndAPlace) {
-    EXPECT_EQ(errors_of("[probe]\nsurfaces = [{ axis = \"W\", at = 1 }]\n"),
-              "2:22: config-value: 'W' is not an axis letter\n");
+    EXPECT_EQ(errors_of("[probe]\nsurfaces = [{ axis = \"Q\", at = 1 }]\n"),
+              "2:22: config-value: 'Q' is not an axis letter\n");
     EXPECT_EQ(errors_of("[probe]\nsurfaces = [{ axis = \"XY\", at = 1 }]\n"),
               "2:22: config-value: 'XY' is not an axis letter\n");
     EXPECT_NE(errors_of("[probe]\nsurfaces = [{ axis = \"Z\" }]\n").find("2:"), std::string::npos);
