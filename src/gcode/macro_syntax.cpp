@@ -21,19 +21,40 @@ constexpr int max_bracket_depth = 5;
 
 struct FunctionName {
     std::string_view name;
+    std::string_view abbreviation;  // Fanuc's first two letters; empty where none is accepted
     ExprFunction function;
     int arguments;  // 1, or 2 for POW (ATAN takes 1 or 2)
 };
 
-// Longest names first where one is a prefix of another (ATAN before ...).
+// Full names are tried before any abbreviation, so `SI` never shadows `SQRT`. POW has no
+// abbreviation (Fanuc accepts none for it).
 constexpr std::array<FunctionName, 17> functions{{
-    {"ASIN", ExprFunction::asin, 1}, {"ACOS", ExprFunction::acos, 1}, {"ATAN", ExprFunction::atan, 1},
-    {"SIN", ExprFunction::sin, 1},   {"COS", ExprFunction::cos, 1},   {"TAN", ExprFunction::tan, 1},
-    {"SQRT", ExprFunction::sqrt, 1}, {"ABS", ExprFunction::abs, 1},   {"ROUND", ExprFunction::round, 1},
-    {"FIX", ExprFunction::fix, 1},   {"FUP", ExprFunction::fup, 1},   {"LN", ExprFunction::ln, 1},
-    {"EXP", ExprFunction::exp, 1},   {"POW", ExprFunction::pow, 2},   {"ADP", ExprFunction::adp, 1},
-    {"BIN", ExprFunction::bin, 1},   {"BCD", ExprFunction::bcd, 1},
+    {"ASIN", "AS", ExprFunction::asin, 1}, {"ACOS", "AC", ExprFunction::acos, 1},
+    {"ATAN", "AT", ExprFunction::atan, 1}, {"SIN", "SI", ExprFunction::sin, 1},
+    {"COS", "CO", ExprFunction::cos, 1},   {"TAN", "TA", ExprFunction::tan, 1},
+    {"SQRT", "SQ", ExprFunction::sqrt, 1}, {"ABS", "AB", ExprFunction::abs, 1},
+    {"ROUND", "RO", ExprFunction::round, 1}, {"FIX", "FI", ExprFunction::fix, 1},
+    {"FUP", "FU", ExprFunction::fup, 1},   {"LN", "", ExprFunction::ln, 1},
+    {"EXP", "EX", ExprFunction::exp, 1},   {"POW", "", ExprFunction::pow, 2},
+    {"ADP", "AD", ExprFunction::adp, 1},   {"BIN", "BI", ExprFunction::bin, 1},
+    {"BCD", "BC", ExprFunction::bcd, 1},
 }};
+
+//! A keyword or its two-letter abbreviation (Fanuc reads `GO` as GOTO, `AN` as AND ...).
+bool accept_keyword_or(Cursor& cursor, std::string_view keyword, std::string_view abbreviation) {
+    return cursor.accept_keyword(keyword) || cursor.accept_keyword(abbreviation);
+}
+
+//! An abbreviation that stands for a statement keyword only when followed by `next_ok`.
+template <typename Next>
+bool accept_abbreviation(Cursor& cursor, std::string_view abbreviation, Next next_ok) {
+    Cursor look = cursor;
+    if (!look.accept_keyword(abbreviation) || !next_ok(look.peek())) return false;
+    cursor = look;
+    return true;
+}
+
+bool starts_number(char c) { return is_digit(c) || c == '#' || c == '[' || c == '.'; }
 
 //! Recursive descent over Fanuc's precedence: functions and brackets; * / AND MOD; + - OR XOR;
 //! comparisons.
@@ -69,7 +90,7 @@ public:
                 op = next == '+' ? ExprOp::add : ExprOp::subtract;
             } else if (c_.accept_keyword("OR")) {
                 op = ExprOp::bit_or;
-            } else if (c_.accept_keyword("XOR")) {
+            } else if (accept_keyword_or(c_, "XOR", "XO")) {
                 op = ExprOp::bit_xor;
             } else {
                 return std::nullopt;
@@ -92,9 +113,9 @@ public:
             } else if (next == '/') {
                 ++c_.pos;
                 op = ExprOp::divide;
-            } else if (c_.accept_keyword("AND")) {
+            } else if (accept_keyword_or(c_, "AND", "AN")) {
                 op = ExprOp::bit_and;
-            } else if (c_.accept_keyword("MOD")) {
+            } else if (accept_keyword_or(c_, "MOD", "MO")) {
                 op = ExprOp::mod;
             } else {
                 return std::nullopt;
@@ -127,6 +148,11 @@ public:
         if (is_digit(next) || next == '.') return number(out);
         for (const FunctionName& f : functions) {
             if (c_.accept_keyword(f.name)) return function(f, column, out);
+        }
+        for (const FunctionName& f : functions) {
+            if (!f.abbreviation.empty() && accept_abbreviation(c_, f.abbreviation, [](char c) { return c == '['; })) {
+                return function(f, column, out);
+            }
         }
         if (c_.at_end()) return format_error(column, "expression ends too early");
         return format_error(column, fmt::format("unexpected '{}' in an expression", c_.line[c_.pos]));
@@ -309,9 +335,11 @@ bool at_statement(Cursor cursor) {
         Cursor look = cursor;
         if (look.accept_keyword(keyword)) return true;
     }
-    // Fanuc reads a keyword from its first two letters: `WH [..] DO1` is WHILE.
+    // Fanuc reads a keyword from its first two letters: `WH [..] DO1` is WHILE, `GO 10` GOTO,
+    // `EN1` END1.
     Cursor look = cursor;
-    return look.accept_keyword("WH") && look.peek() == '[';
+    return accept_abbreviation(look, "WH", [](char c) { return c == '['; }) ||
+           accept_abbreviation(look, "GO", starts_number) || accept_abbreviation(look, "EN", is_digit);
 }
 
 std::optional<Diagnostic> parse_word_expression(Cursor& cursor, Block& block, Word& word) {
@@ -341,21 +369,21 @@ std::optional<Diagnostic> parse_statement(Cursor& cursor, Block& block) {
     if (cursor.accept_keyword("IF")) {
         if (cursor.peek() != '[') return parser.format_error(cursor.column(), "'[' expected after IF");
         if (auto e = parser.comparison(s.condition)) return e;
-        if (cursor.accept_keyword("GOTO")) {
+        if (cursor.accept_keyword("GOTO") || accept_abbreviation(cursor, "GO", starts_number)) {
             s.kind = StatementKind::if_goto;
             return parser.unary(s.value);
         }
-        if (cursor.accept_keyword("THEN")) {
+        if (cursor.accept_keyword("THEN") || accept_abbreviation(cursor, "TH", [](char c) { return c == '#'; })) {
             s.kind = StatementKind::if_then;
             return assignment();
         }
         return parser.format_error(cursor.column(), "GOTO or THEN expected after IF [condition]");
     }
-    if (cursor.accept_keyword("GOTO")) {
+    if (cursor.accept_keyword("GOTO") || accept_abbreviation(cursor, "GO", starts_number)) {
         s.kind = StatementKind::go_to;
         return parser.unary(s.value);
     }
-    if (cursor.accept_keyword("WHILE") || (cursor.accept_keyword("WH") && cursor.peek() == '[')) {
+    if (cursor.accept_keyword("WHILE") || accept_abbreviation(cursor, "WH", [](char c) { return c == '['; })) {
         s.kind = StatementKind::while_do;
         if (cursor.peek() != '[') return parser.format_error(cursor.column(), "'[' expected after WHILE");
         if (auto e = parser.comparison(s.condition)) return e;
@@ -366,7 +394,7 @@ std::optional<Diagnostic> parse_statement(Cursor& cursor, Block& block) {
         s.kind = StatementKind::do_loop;
         return loop_number(cursor, block, s.loop);
     }
-    if (cursor.accept_keyword("END")) {
+    if (cursor.accept_keyword("END") || accept_abbreviation(cursor, "EN", is_digit)) {
         s.kind = StatementKind::end_loop;
         return loop_number(cursor, block, s.loop);
     }

@@ -1,7 +1,8 @@
 #pragma once
-// Fanuc's corner words: `G1 X.. Y.. ,R r` rounds the corner between this line and the next
-// move with an arc of radius r tangent to both; `,C c` cuts it with a chamfer from c before the
-// corner on the line to c after it on the next line. Geometry only: the executor decides when.
+// Fanuc's corner words: `G1 X.. Y.. ,R r` (or a G2/G3 block with ,R) rounds the corner between
+// this move and the next with an arc of radius r tangent to both; `,C c` cuts it with a chamfer
+// from c before the corner to c after it (straight-line distances from the corner, so on an arc
+// c is a chord). Geometry only: the executor decides when.
 #include <optional>
 #include <string>
 #include <variant>
@@ -12,19 +13,20 @@ namespace nckit::interp {
 
 enum class CornerKind { round, chamfer };
 
-//! The corner between `first` (a G1 line ending at the corner) and `next` (the move that leaves
-//! it: a line, or for rounding an arc), in `plane`: both are shortened to the tangent (or
-//! chamfer) points and `corner` is the piece between them, with the first line's feed.
+using CornerMove = std::variant<Line, Arc>;
+
+//! The corner between `first` (a G1 line or G2/G3 arc ending at the corner) and `next` (the line
+//! or arc that leaves it), in `plane`: both are shortened to the tangent (or chamfer) points and
+//! `corner` is the piece between them, with the first move's feed.
 struct CornerResult {
-    Line first;
-    std::variant<Line, Arc> next;
-    std::variant<Line, Arc> corner;
+    CornerMove first;
+    CornerMove next;
+    CornerMove corner;
 };
 
 //! The rounded or chamfered corner, or why it cannot be made (the moves are not in the plane,
 //! they run straight on or back, the radius or chamfer does not fit on them).
-[[nodiscard]] std::variant<CornerResult, std::string> make_corner(const Line& first,
-                                                                  const std::variant<Line, Arc>& next,
+[[nodiscard]] std::variant<CornerResult, std::string> make_corner(const CornerMove& first, const CornerMove& next,
                                                                   CornerKind kind, double size_mm, Plane plane);
 
 }  // namespace nckit::interp

@@ -192,14 +192,14 @@ private:
     SequenceReader sequence_reader_;
     bool skip_past_sequence_ = false;
 
-    //! A G1 line with a corner word, and what its block made after it, waiting for the next move.
+    //! A G1 line or G2/G3 arc with a corner word, and what its block made after it, waiting for the next move.
     struct HeldCorner {
         Word word;                 //!< the ,R or ,C word (its column) ...
         SourceLocation location;   //!< ... in this block
         CornerKind kind = CornerKind::round;
         double size_mm = 0;
         Plane plane = Plane::xy;
-        std::vector<Move> moves;   //!< the line first
+        std::vector<Move> moves;   //!< the line or arc first
     };
     std::optional<HeldCorner> corner_;
 

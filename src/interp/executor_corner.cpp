@@ -1,5 +1,5 @@
-// Fanuc's corner words `,R` and `,C` on a G1 block: the block's line is held back until the
-// next block's move is known, then both are shortened and the rounding arc or chamfer line put
+// Fanuc's corner words `,R` and `,C` on a G1, G2 or G3 block: the block's move is held back
+// until the next block's move is known, then both are shortened and the rounding arc or chamfer line put
 // between them (corner_round.cpp). The pieces go on to cutter compensation as programmed moves,
 // so a compensated contour is offset with its rounded corners.
 #include <fmt/format.h>
@@ -24,9 +24,11 @@ std::optional<Diagnostic> Executor::check_corner() {
         return error(corner.column, "bad-value", fmt::format(",{} must be positive", corner.letter));
     }
     const GCode non_modal = words_.group(ModalGroup::non_modal);
-    if (motion_ != g(1) || !block_has_axis_words() || non_modal >= 0) {
+    const bool feeds = motion_ == g(1) || motion_ == g(2) || motion_ == g(3);
+    if (!feeds || !block_has_axis_words() || non_modal >= 0) {
         return error(corner.column, "bad-corner",
-                     fmt::format(",{} needs a G1 move in its block (the corner is at its end point)", corner.letter));
+                     fmt::format(",{} needs a G1, G2 or G3 move in its block (the corner is at its end point)",
+                                 corner.letter));
     }
     if (words_.has_m(2) || words_.has_m(30)) {
         return error(corner.column, "bad-corner", fmt::format(",{} needs a move after it, not the end of the program",
@@ -48,20 +50,19 @@ std::optional<Diagnostic> Executor::apply_corner(std::vector<Move>& out, std::si
         std::size_t next = first;
         while (next < out.size() && !is_motion(out[next])) ++next;
         if (next == out.size()) return held_error("the next block must move in the plane (G1, G2 or G3)");
-        std::variant<Line, Arc> following;
-        if (const Line* line = std::get_if<Line>(&out[next].what)) {
-            following = *line;
-        } else if (const Arc* arc = std::get_if<Arc>(&out[next].what)) {
-            following = *arc;
-        } else {
-            return held_error("the next block must move in the plane (G1, G2 or G3)");
-        }
+        const auto corner_move = [](const Move& move) -> std::optional<CornerMove> {
+            if (const Line* line = std::get_if<Line>(&move.what)) return *line;
+            if (const Arc* arc = std::get_if<Arc>(&move.what)) return *arc;
+            return std::nullopt;
+        };
+        const std::optional<CornerMove> following = corner_move(out[next]);
+        if (!following) return held_error("the next block must move in the plane (G1, G2 or G3)");
         const CornerKind kind = held.kind;
-        auto made = make_corner(std::get<Line>(held.moves.front().what), following, kind, held.size_mm, held.plane);
+        auto made = make_corner(*corner_move(held.moves.front()), *following, kind, held.size_mm, held.plane);
         if (const std::string* why = std::get_if<std::string>(&made)) return held_error(*why);
         CornerResult& corner = std::get<CornerResult>(made);
         std::visit([&](auto& shortened) { out[next].what = shortened; }, corner.next);
-        std::get<Line>(held.moves.front().what) = corner.first;
+        std::visit([&](auto& shortened) { held.moves.front().what = shortened; }, corner.first);
         Move piece{Line{}, held.moves.front().where, held.moves.front().sequence_number};
         std::visit([&](auto& made_piece) { piece.what = made_piece; }, corner.corner);
         held.moves.push_back(std::move(piece));
@@ -74,8 +75,10 @@ std::optional<Diagnostic> Executor::apply_corner(std::vector<Move>& out, std::si
         std::size_t last = out.size();
         while (last > first && !is_motion(out[last - 1])) --last;
         const Line* line = last > first ? std::get_if<Line>(&out[last - 1].what) : nullptr;
-        if (line == nullptr || line->rapid) {
-            return error(word.column, "bad-corner", fmt::format(",{} needs a G1 line in its block", word.letter));
+        const bool arc = last > first && std::holds_alternative<Arc>(out[last - 1].what);
+        if (!arc && (line == nullptr || line->rapid)) {
+            return error(word.column, "bad-corner",
+                         fmt::format(",{} needs a G1 line or G2/G3 arc in its block", word.letter));
         }
         HeldCorner held{word, block_->location, word.letter == 'R' ? CornerKind::round : CornerKind::chamfer,
                         offset_value(word), modal_.plane, {}};

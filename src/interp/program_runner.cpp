@@ -37,6 +37,21 @@ bool is_whole_number_letter(char letter) {
            letter == 'N' || letter == 'O';
 }
 
+//! The text of an operator message comment `(MSG, text)` (MSG in any case, blanks allowed
+//! before it and after the comma, as LinuxCNC reads it), or nothing for any other comment.
+std::optional<std::string> operator_message(std::string_view comment) {
+    std::size_t i = comment.find_first_not_of(" \t");
+    if (i == std::string_view::npos || comment.size() < i + 4) return std::nullopt;
+    for (std::size_t k = 0; k < 3; ++k) {
+        const char c = comment[i + k];
+        if (c != "MSG"[k] && c != "msg"[k]) return std::nullopt;
+    }
+    if (comment[i + 3] != ',') return std::nullopt;
+    std::string_view text = comment.substr(i + 4);
+    const std::size_t start = text.find_first_not_of(" \t");
+    return std::string(start == std::string_view::npos ? std::string_view{} : text.substr(start));
+}
+
 }  // namespace
 
 ProgramRunner::ProgramRunner(const MachineConfig& machine, ProgramSource main, const InterpreterOptions& options)
@@ -144,7 +159,13 @@ std::optional<InterpResult> ProgramRunner::fill(std::vector<Move>& pending) {
                 frames_[0].program.line = source().next_line_number();
                 continue;
             }
-            if (block_.words.empty() && block_.statement.kind == StatementKind::none) continue;
+            if (block_.words.empty() && block_.statement.kind == StatementKind::none) {
+                // A block of only a comment does nothing, unless it is an operator message.
+                if (options_.on_message) {
+                    if (auto message = operator_message(block_.comment)) options_.on_message(block_.location, *message);
+                }
+                continue;
+            }
             block = repeating() ? remember(block_) : &block_;
         }
         seen_block_ = true;
@@ -192,6 +213,9 @@ std::optional<InterpResult> ProgramRunner::run_block(const Block& block, std::ve
     }
     if (!block.words.empty() && block.words.front().letter == 'N') {
         last_sequence_ = static_cast<std::int64_t>(block.words.front().value);
+    }
+    if (options_.on_message) {
+        if (auto text = operator_message(block.comment)) options_.on_message(block.location, *text);
     }
     if (block.statement.kind != StatementKind::none) {
         if (auto error = run_statement(block)) return InterpResult(std::move(*error));
@@ -244,6 +268,7 @@ void ProgramRunner::program_stop(const Block& block, std::vector<Move>& pending)
     Io stop{IoKind::mcode, 0, 0};
     stop.waits = true;
     pending.push_back(Move{stop, block.location, last_sequence_});
+    if (options_.on_message) options_.on_message(block.location, block.comment);
     if (options_.on_warning) {
         Diagnostic note = error_at(block.at_column(block.statement.column), "program-stop",
                                    fmt::format("#3006 program stop: {}", block.comment));

@@ -153,6 +153,11 @@ void CanonOutput::spindle_speed(double value, bool constant_surface_speed, doubl
     }
 }
 
+void CanonOutput::message(const std::string& text) {
+    std::string copy = text;  // MESSAGE takes a char*, not a const one
+    MESSAGE(copy.data());
+}
+
 AfterMove CanonOutput::io(const Io& io) {
     switch (io.kind) {
         case IoKind::spindle_speed:

@@ -27,6 +27,8 @@ public:
 
     //! M2/M30 or the end of the file: spindle and coolant off, per-minute feed, PROGRAM_END.
     void emit_program_end();
+    //! An operator message ((MSG, text), #3006): LinuxCNC's MESSAGE, shown by its GUI.
+    void message(const std::string& text);
 
     [[nodiscard]] bool mist() const { return mist_; }
     [[nodiscard]] bool flood() const { return flood_; }

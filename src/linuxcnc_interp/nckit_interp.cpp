@@ -139,6 +139,9 @@ int NckitInterp::start_run() {
     options.library_dir = settings_.library_dir;
     options.retained_file = settings_.retained_file;
     options.max_blocks = settings_.max_blocks;
+    options.on_message = [this](const SourceLocation& where, const std::string& text) {
+        messages_.push_back(Message{where.file ? *where.file : program_path_, where.line, text});
+    };
     interpreter_.emplace(*machine_, std::move(source).value(), options);
     canon_.emplace(interpreter_->machine(), settings_.g64_tolerance_mm, settings_.exact_path, settings_.line_comments);
     return INTERP_OK;
@@ -155,6 +158,7 @@ int NckitInterp::close() {
     line_ = 0;
     sequence_ = 0;
     move_file_.clear();
+    messages_.clear();
     return INTERP_OK;
 }
 
@@ -206,11 +210,13 @@ int NckitInterp::read() {
 int NckitInterp::execute() {
     return guarded(error_, [&] {
         if (pending_) {
+            issue_messages(&*pending_);
             AfterMove after = canon_->emit(*pending_, view_);
             pending_.reset();
             return static_cast<int>(after == AfterMove::wait_for_motion ? INTERP_EXECUTE_FINISH : INTERP_OK);
         }
         if (pending_end_) {
+            issue_messages(nullptr);
             canon_->emit_program_end();
             pending_end_ = false;
             ended_ = true;
@@ -218,6 +224,20 @@ int NckitInterp::execute() {
         }
         return static_cast<int>(INTERP_OK);
     });
+}
+
+void NckitInterp::issue_messages(const Move* before) {
+    std::size_t issued = 0;
+    for (const Message& m : messages_) {
+        if (before != nullptr) {
+            const std::string file = before->where.file ? *before->where.file : program_path_;
+            // A move of an earlier block of the same file still comes first.
+            if (file == m.file && before->where.line < m.line) break;
+        }
+        canon_->message(m.text);
+        ++issued;
+    }
+    messages_.erase(messages_.begin(), messages_.begin() + static_cast<std::ptrdiff_t>(issued));
 }
 
 int NckitInterp::read(const char* line) {

@@ -7,7 +7,9 @@
 // therefore comes from read(), before any call of its block: what LinuxCNC has queued from the
 // blocks before it still runs, nothing of the block itself does.
 #include <optional>
+#include <cstdint>
 #include <string>
+#include <vector>
 
 #include "canon_output.hpp"
 #include "linuxcnc_headers.hpp"
@@ -75,6 +77,17 @@ private:
     int line_ = 0;
     int sequence_ = 0;
     std::string move_file_;                   // the file of the move last read (a called program's)
+
+    //! Operator messages the interpreter gave, waiting for the first move of their block or
+    //! after it: messages come while a block is read, which may be before moves still queued
+    //! from earlier blocks (cutter compensation looks ahead) are executed.
+    struct Message {
+        std::string file;
+        std::uint32_t line = 0;
+        std::string text;
+    };
+    std::vector<Message> messages_;
+    void issue_messages(const Move* before);  //!< the messages due before `before` (all: null)
 };
 
 }  // namespace nckit::lcnc

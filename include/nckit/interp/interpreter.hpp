@@ -47,6 +47,10 @@ struct InterpreterOptions {
     //! Called with each warning (a block that runs but likely not as meant, e.g. `G4 P1.5`);
     //! none: warnings are dropped.
     std::function<void(const Diagnostic&)> on_warning;
+    //! Called with each operator message and the block that gives it: the text of a
+    //! `(MSG, text)` comment, and #3006's comment when it stops the program. None: not shown
+    //! (the LinuxCNC plug-in shows them as LinuxCNC's MESSAGE).
+    std::function<void(const SourceLocation&, const std::string&)> on_message;
 };
 
 //! The program ended: M2, M30, a closing '%', or the end of the file.
