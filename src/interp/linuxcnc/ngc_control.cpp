@@ -33,6 +33,11 @@ bool is_global(OKind kind) {
 
 std::string NgcRunner::full_name() const {
     const OWord& o = line_.oword;
+    if (o.kind == OKind::bare && !o.named) {
+        // A Fanuc-style O number: O0002 is the block M98 P2 calls.
+        const std::size_t digit = o.label.find_first_not_of('0');
+        return digit == std::string::npos ? std::string("0") : o.label.substr(digit);
+    }
     if (is_global(o.kind)) return o.label;
     const std::string& prefix = frames_.size() > 1 ? frames_.back().sub : defining_sub_ ? sub_name_ : std::string();
     return prefix + "#" + o.label;
@@ -147,7 +152,19 @@ std::optional<Diagnostic> NgcRunner::run_oword() {
                                                   "subroutine {}", o.shown(), frames_.back().sub));
             }
             if (skipping_other) return std::nullopt;
-            if (o.kind == OKind::bare) return std::nullopt;  // a Fanuc-style program number: nothing to do
+            if (o.kind == OKind::bare) {
+                // A Fanuc-style program number: nothing to do, unless a call is looking for it.
+                if (!skipping || !skipping_to_sub_) return std::nullopt;
+                if (!fanuc_search_) {
+                    return fail(o.column, fmt::format("{} is a Fanuc-style sub: call it with M98 P{}, not with "
+                                                      "`call`", o.shown(), name));
+                }
+                if (auto error = save_label(name)) return error;
+                skipping_o_.clear();
+                skipping_to_sub_ = false;
+                fanuc_search_ = false;
+                return std::nullopt;
+            }
             if (skipping) {
                 // The forward search for a call's sub ends here: record it, run its body.
                 if (auto error = save_label(name)) return error;
@@ -165,13 +182,17 @@ std::optional<Diagnostic> NgcRunner::run_oword() {
         case OKind::endsub:
         case OKind::return_: {
             if (skipping_other) return std::nullopt;
-            std::optional<double> value;
-            if (o.expr >= 0) {
-                double v = 0;
-                if (auto error = condition(v)) return error;
-                value = v;
+            // Passing over a definition evaluates nothing: `endsub [#<result>]` names parameters
+            // that exist only once the sub runs, as in LinuxCNC.
+            if (!skipping) {
+                std::optional<double> value;
+                if (o.expr >= 0) {
+                    double v = 0;
+                    if (auto error = condition(v)) return error;
+                    value = v;
+                }
+                parameters_.set_return_value(value);
             }
-            parameters_.set_return_value(value);
             if (frames_.size() == 1 && sub_name_.empty()) {
                 return fail(o.column, fmt::format("not in a subroutine definition: {} {}", o.shown(),
                                                   o.kind == OKind::endsub ? "endsub" : "return"));

@@ -41,8 +41,8 @@ public:
                 if (param.op == Op::named) {
                     return parameters_.exists(line_.names[static_cast<std::size_t>(param.name)]) ? 1.0 : 0.0;
                 }
-                double index = std::round(param.a >= 0 ? eval(param.a) : param.value);
-                return index >= 1 && index <= static_cast<double>(max_parameter) ? 1.0 : 0.0;
+                double number = std::round(param.a >= 0 ? eval(param.a) : param.value);
+                return number >= 1 && number <= static_cast<double>(max_parameter) ? 1.0 : 0.0;
             }
             case Op::negate: return -eval(node.a);
             case Op::function: return function(node);

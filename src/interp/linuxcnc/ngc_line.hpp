@@ -62,6 +62,7 @@ struct OWord {
     OKind kind = OKind::none;
     std::string label;              //!< `name` of o<name>, or the digits of o100
     std::int32_t expr = -1;         //!< condition, repeat count or return value
+    std::int32_t label_expr = -1;   //!< o[expr] and o#1: the number, known when the line runs
     std::vector<std::int32_t> args; //!< call arguments
     std::uint32_t column = 0;
     bool named = false;             //!< o<name>, not o100

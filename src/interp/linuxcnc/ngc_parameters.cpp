@@ -48,7 +48,9 @@ void NgcParameters::enter_call(const std::vector<double>& arguments) {
 void NgcParameters::leave_call() {
     if (frames_.size() <= 1) return;
     const Frame& frame = frames_.back();
-    for (std::size_t i = 0; i < call_arguments; ++i) values_[i + 1] = frame.saved[i];
+    if (!frame.shares_numbered) {
+        for (std::size_t i = 0; i < call_arguments; ++i) values_[i + 1] = frame.saved[i];
+    }
     frames_.pop_back();
 }
 

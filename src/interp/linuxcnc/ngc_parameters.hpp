@@ -42,6 +42,8 @@ public:
 
     //! A call: the caller's #1-#30 are kept, the arguments take their place, named locals start empty.
     void enter_call(const std::vector<double>& arguments);
+    //! An M98 call: named locals start empty, #1-#30 stay the caller's (LinuxCNC's Fanuc-style subs).
+    void enter_shared_call() { frames_.push_back(Frame{{}, {}, true}); }
     void leave_call();
     [[nodiscard]] std::size_t depth() const { return frames_.size() - 1; }
 
@@ -54,6 +56,7 @@ private:
     struct Frame {
         std::array<double, call_arguments> saved{};
         std::unordered_map<std::string, double> locals;
+        bool shares_numbered = false;  //!< M98: #1-#30 are not restored on return
     };
     Values values_{};
     std::vector<Frame> frames_;

@@ -17,10 +17,7 @@ bool is_digit(char c) { return c >= '0' && c <= '9'; }
 bool is_lower(char c) { return c >= 'a' && c <= 'z'; }
 char lower(char c) { return (c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c; }
 
-struct FunctionName {
-    std::string_view name;
-    Function function;
-};
+struct FunctionName { std::string_view name; Function function; };
 // Longer names first where one starts another (asin before abs is not needed; exists apart).
 constexpr std::array<FunctionName, 13> functions{{
     {"abs", Function::abs}, {"acos", Function::acos}, {"asin", Function::asin}, {"atan", Function::atan},
@@ -41,10 +38,7 @@ constexpr std::array<BinaryOp, 15> binary_ops{{
     {"and", Op::logical_and, 2}, {"or", Op::logical_or, 2}, {"xor", Op::logical_xor, 2},
 }};
 
-struct OKeyword {
-    std::string_view name;
-    OKind kind;
-};
+struct OKeyword { std::string_view name; OKind kind; };
 constexpr std::array<OKeyword, 15> o_keywords{{
     {"sub", OKind::sub},         {"endsub", OKind::endsub},       {"call", OKind::call},
     {"return", OKind::return_},  {"do", OKind::do_},              {"while", OKind::while_},
@@ -180,8 +174,10 @@ private:
             // o0100 and o100 name the same label, as LinuxCNC reads the number.
             std::size_t first = buffer_.find_first_not_of('0', start);
             o.label = first < pos_ ? buffer_.substr(first, pos_ - first) : "0";
+        } else if (peek() == '[' || peek() == '#') {
+            if (auto e = value(o.label_expr)) return e;  // o[#2 * 10]: the number is computed
         } else {
-            return error(column(), "O-word needs a number or a <name>");
+            return error(column(), "O-word needs a number, a <name> or a [value]");
         }
         std::size_t start = pos_;
         while (is_lower(peek())) ++pos_;

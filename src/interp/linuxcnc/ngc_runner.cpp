@@ -1,6 +1,7 @@
 #include "ngc_runner.hpp"
 
 #include <cmath>
+#include <type_traits>
 
 #include <fmt/format.h>
 
@@ -42,7 +43,13 @@ NgcRunner::NgcRunner(const MachineConfig& machine, ProgramSource main, const Int
     files_.emplace(main_file_, std::move(reader));
     frames_.push_back(Frame{});
     connect_live_parameters();
-    if (auto error = load_parameter_file()) startup_error_ = std::move(error);
+    // As LinuxCNC starts: the parameter file first, then RS274NGC_STARTUP_CODE (here the machine
+    // file's `startup_gcodes`), whose G54-G59 wins over the file's #5220.
+    if (auto error = load_parameter_file()) {
+        startup_error_ = std::move(error);
+    } else if (auto start_error = executor_.start()) {
+        startup_error_ = std::move(start_error);
+    }
 }
 
 Diagnostic NgcRunner::fail(std::uint32_t column, std::string message) const {
@@ -116,12 +123,29 @@ std::optional<InterpResult> NgcRunner::run_line(std::vector<Move>& pending) {
             seen_percent_ = true;
             return std::nullopt;
         }
+        if (skipping_to_sub_) {
+            // Nothing after the closing % is read: a sub defined there is not found.
+            return InterpResult(error_at(call_location_, "ngc-error",
+                                         fmt::format("subroutine {} not found before the closing %",
+                                                     fanuc_search_ ? "O" + skipping_o_ : "o<" + skipping_o_ + ">")));
+        }
         if (auto error = executor_.end_program(pending)) return InterpResult(std::move(*error));
         return InterpResult(ProgramEnd{});
     }
     if (line_.block_delete && options_.block_delete) return std::nullopt;
     if (line_.empty()) return std::nullopt;
     seen_line_ = true;
+    if (line_.oword.label_expr >= 0) {
+        // o[expr]: LinuxCNC computes the number as it reads the line. Passing over a sub's
+        // definition or a false `if` it leaves the line alone; reading on to find a called sub it
+        // computes it, and an undefined parameter there is an error, as in LinuxCNC.
+        if (!skipping_o_.empty() && !skipping_to_sub_) return std::nullopt;
+        double number = 0;
+        if (auto error = evaluate(line_, line_.oword.label_expr, parameters_, number)) {
+            return InterpResult(std::move(*error));
+        }
+        line_.oword.label = fmt::format("{}", static_cast<std::int64_t>(std::lround(number)));
+    }
     if (line_.oword.kind != OKind::none) {
         if (auto error = run_oword()) return InterpResult(std::move(*error));
         return std::nullopt;
@@ -156,11 +180,44 @@ std::optional<InterpResult> NgcRunner::run_ordinary(std::vector<Move>& pending) 
         }
     }
     if (block_.words.empty()) return std::nullopt;
+    for (const Word& w : block_.words) {
+        if (w.letter == 'M' && (w.value == 98 || w.value == 99)) return run_fanuc_sub_words(pending);
+    }
     if (auto error = translate_block()) return InterpResult(std::move(*error));
     bool program_end = false;
+    const std::size_t first_new = pending.size();
     if (auto error = executor_.run(block_, pending, program_end)) return InterpResult(std::move(*error));
+    follow_linuxcnc_tapping(pending, first_new);
     if (program_end) return InterpResult(ProgramEnd{});
     return std::nullopt;
+}
+
+void NgcRunner::follow_linuxcnc_tapping(std::vector<Move>& pending, std::size_t first_new) {
+    // LinuxCNC 2.9 sends G74/G84's two feeds under G18 and G19 to the point with X, Y, Z turned
+    // round (G18: X gets the Y value, Y the Z value, Z the X value; G19: X gets Z, Y gets X, Z
+    // gets Y) while its interpreter goes on from the point the cycle meant. The moves here are
+    // LinuxCNC's: those feeds turned, and the move after each starting where the tool then is.
+    const ModalView view = executor_.modal_view();
+    const bool tapping = (view.motion_code == 840 || view.motion_code == 740) && view.plane != Plane::xy;
+    for (std::size_t i = first_new; i < pending.size(); ++i) {
+        std::visit(
+            [&](auto& m) {
+                if constexpr (requires { m.from; }) {
+                    if (tool_at_) m.from = *tool_at_;
+                    tool_at_.reset();
+                }
+                if constexpr (std::is_same_v<std::decay_t<decltype(m)>, Line>) {
+                    if (!tapping || m.rapid) return;
+                    const AxisVector meant = m.to;
+                    const bool zx = view.plane == Plane::zx;
+                    m.to[Axis::X] = zx ? meant[Axis::Y] : meant[Axis::Z];
+                    m.to[Axis::Y] = zx ? meant[Axis::Z] : meant[Axis::X];
+                    m.to[Axis::Z] = zx ? meant[Axis::X] : meant[Axis::Y];
+                    tool_at_ = m.to;
+                }
+            },
+            pending[i].what);
+    }
 }
 
 std::optional<Diagnostic> NgcRunner::resolve_block() {

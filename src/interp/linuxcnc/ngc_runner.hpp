@@ -46,6 +46,8 @@ private:
         std::string return_file;
         std::uint64_t return_offset = 0;
         std::uint32_t return_line = 0;
+        bool fanuc = false;    //!< called by M98: ends with M99, shares the caller's parameters
+        int repeats_left = 0;  //!< M98 L: runs still to come after this one
     };
 
     // ngc_runner.cpp: reading lines and running ordinary ones.
@@ -55,6 +57,7 @@ private:
     std::optional<Diagnostic> translate_block();
     std::optional<Diagnostic> comments();
     void add_motion_to_here();
+    void follow_linuxcnc_tapping(std::vector<Move>& pending, std::size_t first_new);
     [[nodiscard]] Diagnostic fail(std::uint32_t column, std::string message) const;
     [[nodiscard]] ProgramSource& source() { return *current_; }
     std::optional<Diagnostic> switch_to(const std::string& file, std::uint64_t offset, std::uint32_t line);
@@ -69,6 +72,9 @@ private:
     [[nodiscard]] std::string full_name() const;
     [[nodiscard]] std::optional<std::filesystem::path> find_sub_file(const std::string& name) const;
     std::optional<Diagnostic> condition(double& value);
+
+    // ngc_fanuc_subs.cpp: M98 and M99.
+    std::optional<InterpResult> run_fanuc_sub_words(std::vector<Move>& pending);
 
     // ngc_state.cpp: parameters LinuxCNC keeps current, and its parameter file.
     void connect_live_parameters();
@@ -103,6 +109,7 @@ private:
     // LinuxCNC's skipping state.
     std::string skipping_o_;        //!< skipping forward to this label; empty: not skipping
     bool skipping_to_sub_ = false;  //!< ... to its `sub` line, for a call
+    bool fanuc_search_ = false;     //!< ... to its bare `O<n>` line, for M98
     bool defining_sub_ = false;     //!< passing over a sub's definition in the main program
     std::string sub_name_;          //!< the sub being defined
     bool executed_if_ = false;
@@ -111,6 +118,8 @@ private:
     bool seen_percent_ = false;
     bool seen_line_ = false;
     bool error_is_recoverable_ = false;
+    //! Where the tool stands after a turned tapping feed: the next move starts there.
+    std::optional<AxisVector> tool_at_;
 };
 
 }  // namespace nckit::interp::ngc

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -23,7 +24,7 @@ constexpr std::int64_t fanuc_systems = 6;               // G54-G59; G59.1-G59.3 
 bool required_in_file(std::int64_t n) {
     if (n >= 5161 && n <= 5166) return true;  // G28
     if (n >= 5181 && n <= 5186) return true;  // G30
-    if (n >= 5211 && n <= 5216) return true;  // G92
+    if (n >= 5210 && n <= 5216) return true;  // G92: applied, X-C
     if (n == 5220) return true;               // coordinate system
     if (n >= 5221 && n <= 5386) return (n - 5221) % 20 < 6;  // G54-G59.3 X Y Z A B C
     return false;
@@ -179,6 +180,7 @@ std::optional<Diagnostic> NgcRunner::load_parameter_file() {
     std::string text;
     std::uint32_t line_number = 0;
     std::int64_t previous = 0;
+    std::map<std::int64_t, double> restored;
     while (std::getline(in, text) && line_number < 100000) {
         ++line_number;
         std::istringstream words(text);
@@ -194,11 +196,41 @@ std::optional<Diagnostic> NgcRunner::load_parameter_file() {
                             "parameter numbers out of order: they must increase down the file");
         }
         previous = n;
+        if (n >= 5210 && n <= 5220) restored[n] = value;  // read live later: kept aside here
         parameters_.write(n, value);
         in_file_.insert(n);
         if (n >= work_offset_base && n < work_offset_base + fanuc_systems * work_offset_stride &&
             (n - work_offset_base) % work_offset_stride < 3) {
             (void)executor_.write_system(n, value);
+        }
+    }
+    // As LinuxCNC starts: #5220 picks the work system (1 = G54; G59.1-G59.3, 7-9, are not among
+    // nckit's six), then the G92 offset comes back when #5210 says it was applied. Both run as
+    // blocks (G55; G92 X..) so the Executor keeps its own rules for them.
+    auto run = [&](std::vector<Word> words) -> std::optional<Diagnostic> {
+        Block block;
+        block.location = make_location(file, 1, 1);
+        block.words = std::move(words);
+        std::vector<Move> events;
+        bool program_end = false;
+        return executor_.run(block, events, program_end);
+    };
+    if (restored.contains(5220)) {
+        const double system = std::round(restored[5220]);
+        if (system >= 1 && system <= static_cast<double>(fanuc_systems)) {
+            if (auto e = run({Word{'G', 53.0 + system, true, 1, -1}})) return e;
+        }
+    }
+    if (restored.contains(5210) && restored[5210] == 1.0) {
+        std::vector<Word> words{Word{'G', 92.0, true, 1, -1}};
+        for (std::int64_t n = 5211; n <= 5219; ++n) {
+            const char letter = axis_letters[static_cast<std::size_t>(n - 5211)];
+            auto here = axis_position(letter);  // the work position, program units
+            if (!here || !restored.contains(n)) continue;
+            words.push_back(Word{letter, *here - restored[n], true, 1, -1});
+        }
+        if (words.size() > 1) {
+            if (auto e = run(std::move(words))) return e;
         }
     }
     return std::nullopt;
