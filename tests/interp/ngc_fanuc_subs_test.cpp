@@ -80,6 +80,8 @@ TEST(NgcFanucSubs, ErrorsAsLinuxCncGivesThem) {
               "5:1 M99 inside o<1> sub: a sub called by `call` ends with endsub or return");
     EXPECT_EQ(at(error_of("O1 call\nM2\nO1\nG0 X1\nM99\n", m)),
               "3:1 o1 is a Fanuc-style sub: call it with M98 P1, not with `call`");
+    EXPECT_EQ(at(error_of("M98 P1\nM30\nO1 sub\nG0 X1\nO1 endsub\n", m)),
+              "3:1 o1 sub is called with `o1 call`, not with M98");
     EXPECT_EQ(at(error_of("%\nO2 call\n%\nO2 sub\nO2 endsub\n", m)), "2:1 subroutine o<2> not found before the closing %");
     EXPECT_EQ(at(error_of("%\nM98 P7\n%\nO7\nM99\n", m)), "2:1 subroutine O7 not found before the closing %");
     EXPECT_EQ(at(error_of("M98 P1 L-1\nM30\n", m)), "1:8 M98 L-1: the repeat count is a whole number 0-9999");

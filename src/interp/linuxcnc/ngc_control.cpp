@@ -165,6 +165,9 @@ std::optional<Diagnostic> NgcRunner::run_oword() {
                 fanuc_search_ = false;
                 return std::nullopt;
             }
+            if (skipping && fanuc_search_) {
+                return fail(o.column, fmt::format("{} sub is called with `{} call`, not with M98", o.shown(), o.shown()));
+            }
             if (skipping) {
                 // The forward search for a call's sub ends here: record it, run its body.
                 if (auto error = save_label(name)) return error;
