@@ -132,5 +132,16 @@ TEST(NgcCycles, TappingUnderG18AndG19FeedsWhereLinuxCncFeeds) {
     EXPECT_EQ(g19[4], "2.0000 0.5000 1.0000 -> 2.0000 3.0000 1.0000");
 }
 
+TEST(NgcProbe, G38FeedsToThePointSetsParametersAndGoesOnShortOfIt) {
+    // rs274: G38.2 X3 Y4 from 0,0 probes to (3, 4), #5061/#5062 = 3, 4, #5070 = 0, and the next
+    // move's unnamed axes come from 0.254 mm short of the point: G0 Z1 ends at (2.8476, 3.7968, 1).
+    auto got = lines_of("G0 X0 Y0 Z0\nG38.2 X3 Y4 F100\nG0 Z1\nG0 X[#5061 + #5070] Y#5062\nM2\n");
+    EXPECT_EQ(got, (std::vector<std::string>{
+                       "0.0000 0.0000 0.0000 -> 0.0000 0.0000 0.0000", "0.0000 0.0000 0.0000 -> 3.0000 4.0000 0.0000",
+                       "3.0000 4.0000 0.0000 -> 2.8476 3.7968 1.0000", "2.8476 3.7968 1.0000 -> 3.0000 4.0000 1.0000"}));
+    EXPECT_EQ(at(error_of("G0 Z0\nG38.2 Z-0.1 F100\nM2\n", linuxcnc_mill())),
+              "2:1 start point too close to probe point (G38.x needs 0.254 mm at least)");
+}
+
 }  // namespace
 }  // namespace nckit::test

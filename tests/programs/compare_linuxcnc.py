@@ -82,7 +82,8 @@ COMPARED_KINDS = {"rapid", "linear", "arc", "sync"}
 KNOWN_KINDS = COMPARED_KINDS | {"dwell", "io"}
 LINE_TAG = "nckit-line"
 # Canonical calls that move the machine in ways this harness does not model.
-UNSUPPORTED_CALLS = {"STRAIGHT_PROBE", "RIGID_TAP", "NURBS_FEED", "NURBS_G5_FEED", "NURBS_G6_FEED"}
+# STRAIGHT_PROBE (G38.x) is a feed to its point: rs274 simulates a probe that never trips.
+UNSUPPORTED_CALLS = {"RIGID_TAP", "NURBS_FEED", "NURBS_G5_FEED", "NURBS_G6_FEED"}
 DEFAULT_MILL = {"axes": {"X": (-500.0, 500.0), "Y": (-500.0, 500.0), "Z": (-500.0, 500.0)},
                 "diameter_mode": False}
 
@@ -360,7 +361,7 @@ def parse_rs274(output: str, diameter_machine: bool, radius_program: bool = Fals
                 tlo[axis] = to_mm(axis, v)
         elif call in UNSUPPORTED_CALLS:
             raise ProgramError(f"motion not compared: {where}")
-        elif call in ("STRAIGHT_TRAVERSE", "STRAIGHT_FEED", "ARC_FEED"):
+        elif call in ("STRAIGHT_TRAVERSE", "STRAIGHT_FEED", "STRAIGHT_PROBE", "ARC_FEED"):
             if diameter_machine and radius_program and diameter:
                 raise ProgramError(f"the program should write X as a radius but rs274 is in "
                                    f"diameter mode (G7) at line {line}")

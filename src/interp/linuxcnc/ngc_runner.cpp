@@ -19,6 +19,8 @@ struct Staged {
     std::uint32_t column = 0;
 };
 
+constexpr std::string_view axis_letters_ngc = "XYZABCUVW";  // LinuxCNC's order of #5061-#5069
+
 bool has_g(const Block& block, double code) {
     for (const Word& w : block.words) {
         if (w.letter == 'G' && std::abs(w.value - code) < 1e-9) return true;
@@ -183,12 +185,73 @@ std::optional<InterpResult> NgcRunner::run_ordinary(std::vector<Move>& pending) 
     for (const Word& w : block_.words) {
         if (w.letter == 'M' && (w.value == 98 || w.value == 99)) return run_fanuc_sub_words(pending);
     }
+    // G38.2-G38.5 probe as LinuxCNC's rs274 simulates it: a straight feed to the programmed
+    // point (nothing trips on the way) that leaves that point in #5061-#5069 and 0 in #5070.
+    bool probing = false;
+    for (Word& w : block_.words) {
+        if (w.letter == 'G' && w.value >= 38.15 && w.value <= 38.55) {
+            w.value = 1;
+            probing = true;
+        }
+    }
     if (auto error = translate_block()) return InterpResult(std::move(*error));
     bool program_end = false;
     const std::size_t first_new = pending.size();
     if (auto error = executor_.run(block_, pending, program_end)) return InterpResult(std::move(*error));
     follow_linuxcnc_tapping(pending, first_new);
+    if (probing) {
+        // LinuxCNC refuses a probe shorter than 0.01 in (0.254 mm) in X Y Z.
+        for (std::size_t i = first_new; i < pending.size(); ++i) {
+            const auto* line = std::get_if<Line>(&pending[i].what);
+            if (line == nullptr) continue;
+            const double dx = line->to[Axis::X] - line->from[Axis::X], dy = line->to[Axis::Y] - line->from[Axis::Y],
+                         dz = line->to[Axis::Z] - line->from[Axis::Z];
+            if (std::sqrt(dx * dx + dy * dy + dz * dz) < 0.254) {
+                return InterpResult(fail(1, "start point too close to probe point (G38.x needs 0.254 mm at least)"));
+            }
+        }
+        probe_result_.emplace();
+        for (std::size_t i = 0; i < probe_result_->size(); ++i) {
+            (*probe_result_)[i] = axis_position(axis_letters_ngc[i]).value_or(0.0);
+        }
+        if (auto error = back_off_after_probe(pending, first_new)) return InterpResult(std::move(*error));
+    }
     if (program_end) return InterpResult(ProgramEnd{});
+    return std::nullopt;
+}
+
+std::optional<Diagnostic> NgcRunner::back_off_after_probe(std::vector<Move>& pending, std::size_t first_new) {
+    // rs274 goes on from 0.01 in (0.254 mm) short of the probed point, back along the probe's
+    // direction, though the tool stands at the point: nckit's position moves there without a
+    // move (an incremental rapid run and dropped), and the next move starts at the point.
+    const Line* probe = nullptr;
+    for (std::size_t i = first_new; i < pending.size(); ++i) {
+        if (const auto* line = std::get_if<Line>(&pending[i].what)) probe = line;
+    }
+    if (probe == nullptr) return std::nullopt;
+    const AxisVector point = probe->to;
+    double back[3] = {probe->from[Axis::X] - point[Axis::X], probe->from[Axis::Y] - point[Axis::Y],
+                      probe->from[Axis::Z] - point[Axis::Z]};
+    const double length = std::sqrt(back[0] * back[0] + back[1] * back[1] + back[2] * back[2]);
+    const ModalView view = executor_.modal_view();
+    Block shift;
+    shift.location = line_.location;
+    shift.words = {Word{'G', 91.0, true, 1, -1}, Word{'G', 0.0, true, 1, -1}};
+    const char letters[3] = {'X', 'Y', 'Z'};
+    for (int a = 0; a < 3; ++a) {
+        const double by_mm = 0.254 * back[a] / length;
+        if (by_mm != 0.0) shift.words.push_back(Word{letters[a], by_mm / view.length_factor_mm, true, 1, -1});
+    }
+    const std::size_t mark = pending.size();
+    bool program_end = false;
+    if (auto error = executor_.run(shift, pending, program_end)) return error;
+    pending.erase(pending.begin() + static_cast<std::ptrdiff_t>(mark), pending.end());
+    Block restore;
+    restore.location = line_.location;
+    restore.words = {Word{'G', 1.0, true, 1, -1}};
+    if (!view.incremental) restore.words.push_back(Word{'G', 90.0, true, 1, -1});
+    if (auto error = executor_.run(restore, pending, program_end)) return error;
+    tool_at_ = point;
     return std::nullopt;
 }
 

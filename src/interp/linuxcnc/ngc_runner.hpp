@@ -3,6 +3,7 @@
 // flow the way LinuxCNC's interpreter does (labels found by name as the file is read, skipping
 // forward to a label, seeking back to a recorded one), keeps its parameters, and hands each
 // ordinary line, with its values known, to the Executor that nckit's Fanuc reader uses too.
+#include <array>
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -58,6 +59,7 @@ private:
     std::optional<Diagnostic> comments();
     void add_motion_to_here();
     void follow_linuxcnc_tapping(std::vector<Move>& pending, std::size_t first_new);
+    std::optional<Diagnostic> back_off_after_probe(std::vector<Move>& pending, std::size_t first_new);
     [[nodiscard]] Diagnostic fail(std::uint32_t column, std::string message) const;
     [[nodiscard]] ProgramSource& source() { return *current_; }
     std::optional<Diagnostic> switch_to(const std::string& file, std::uint64_t offset, std::uint32_t line);
@@ -120,6 +122,8 @@ private:
     bool error_is_recoverable_ = false;
     //! Where the tool stands after a turned tapping feed: the next move starts there.
     std::optional<AxisVector> tool_at_;
+    //! #5061-#5069 after a G38.x probe: its end point, program units, X Y Z A B C U V W.
+    std::optional<std::array<double, 9>> probe_result_;
 };
 
 }  // namespace nckit::interp::ngc
