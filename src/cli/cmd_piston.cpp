@@ -17,6 +17,7 @@
 #include "nckit/report/process_pages.hpp"
 #include "partial_file.hpp"
 #include "nckit/process/piston.hpp"
+#include "nckit/process/piston_json.hpp"
 #include "nckit/process/piston_svg.hpp"
 #include "verbs.hpp"
 
@@ -34,37 +35,6 @@ struct PistonOptions {
     int trace_turns = 3;
     std::string html;
 };
-
-//! A JSON number, or null where there is none (a round section has no rpm limit).
-std::string number(double value) { return std::isfinite(value) ? fmt::format("{}", value) : "null"; }
-
-std::string run_json(const FtsRunResult& r) { return fmt::format(R"({{"pv":{},"rms":{}}})", r.pv_um, r.rms_um); }
-
-void print_json(const PistonSimulation& s) {
-    const FtsSimulation& f = s.fts;
-    const FtsParameters& p = s.parameters;
-    fmt::print(
-        "{{\"profile_error_um\":{{\"uncompensated\":{},\"feedforward\":{},\"learning\":{}}},"
-        "\"rpm\":{},\"encoder_counts\":{},\"tick_rate_hz\":{},\"dac_step_mm\":{},\"model_error\":{},"
-        "\"spindle_ripple\":{},\"servo\":{{\"natural_frequency_hz\":{},\"damping\":{},\"stroke_mm\":{},\"dac_bits\":{}}},"
-        "\"cam_table\":{{\"theta_cells\":{},\"z_cells\":{},\"cells\":{},\"bytes\":{},\"error_bound_mm\":{},"
-        "\"tolerance_mm\":{}}},"
-        "\"learning\":{{\"settled_turn\":{},\"settle_limit_um\":{},\"air_turns\":{},\"harmonics\":{},\"gain\":{},"
-        "\"contraction\":{},\"contraction_learned\":{}}},"
-        "\"servo_demand\":{{\"peak_displacement_mm\":{},\"displacement_limit_mm\":{},\"peak_displacement_theta_deg\":{},"
-        "\"peak_displacement_z_mm\":{},\"peak_command_mm\":{{\"uncompensated\":{},\"feedforward\":{},\"learning\":{}}},"
-        "\"acceleration_mm_s2\":{},\"acceleration_limit_mm_s2\":{},\"max_rpm\":{}}},"
-        "\"z_mm\":{{\"from\":{},\"to\":{}}},\"feed_mm_rev\":{},\"ticks\":{},\"cut_ticks\":{},\"duration_s\":{}}}\n",
-        run_json(f.uncompensated), run_json(f.feedforward), run_json(f.learning), p.rpm, p.encoder_counts,
-        f.tick_rate_hz, f.dac_step_mm, p.servo.model_error, p.ripple.fraction, p.servo.natural_frequency_hz,
-        p.servo.damping, p.servo.stroke_mm, p.servo.dac_bits, s.table_theta_cells, s.table_z_cells,
-        s.table_theta_cells * s.table_z_cells, s.table_bytes, s.table_error_bound_mm, s.table_tolerance_mm,
-        s.settled_turn, PistonRunOptions{}.settle_limit_um, p.air_turns, p.learning.harmonics, p.learning.gain,
-        f.learning_contraction.any_frequency, f.learning_contraction.learned_harmonics, s.fit.peak_displacement_mm,
-        s.fit.limit_mm, s.fit.theta_deg, s.fit.z_mm, f.uncompensated.peak_command_mm, f.feedforward.peak_command_mm,
-        f.learning.peak_command_mm, s.acceleration_mm_s2, s.acceleration_limit_mm_s2, number(s.max_rpm),
-        p.z_start_mm, p.z_end_mm, p.feed_mm_rev, f.ticks, f.cut_ticks, f.duration_s);
-}
 
 void print_text(const PistonSimulation& s, const cam::PistonJob& job, const std::string& name) {
     const FtsSimulation& f = s.fts;
@@ -150,7 +120,7 @@ int run_piston(PistonOptions options) {
     }
     if (!write_outputs(outputs)) return exit_bad_input;
     if (options.json) {
-        print_json(*simulation);
+        fmt::print("{}\n", to_json(*simulation).dump());
     } else {
         print_text(*simulation, job, options.job);
     }

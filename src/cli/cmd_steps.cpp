@@ -27,7 +27,7 @@
 #include "plan_stream.hpp"
 #include "step_record.hpp"
 #include "nckit/drive/phase_table.hpp"
-#include "nckit/drive/step_compress.hpp"
+#include "nckit/drive/step_queue.hpp"
 #include "nckit/drive/step_generator.hpp"
 #include "nckit/plan/planner.hpp"
 #include "verbs.hpp"
@@ -63,21 +63,15 @@ private:
     std::string buffer_;
 };
 
-// Per axis: the steps of the current direction, compressed when it changes or at the end.
-struct AxisCompressor {
-    int direction = 0;
-    std::int64_t t_prev_ns = 0;
-    std::vector<std::int64_t> times;
-};
-
-void flush_axis(std::size_t axis, AxisCompressor& c, std::int64_t max_error_ns, std::string& out,
-                std::int64_t& runs) {
-    if (c.times.empty()) return;
-    for (const StepRun& run : compress_steps(c.times, c.t_prev_ns, max_error_ns)) {
-        out += fmt::format("queue_step {} {} {} {}\n", axis, run.interval_ns, run.count, run.add_ns);
-        ++runs;
+void print_commands(std::vector<StepQueueCommand>& commands, std::string& out) {
+    for (const StepQueueCommand& c : commands) {
+        if (c.kind == StepQueueCommand::Kind::set_direction) {
+            out += fmt::format("set_next_step_dir {} {}\n", c.axis, c.direction);
+        } else {
+            out += fmt::format("queue_step {} {} {} {}\n", c.axis, c.run.interval_ns, c.run.count, c.run.add_ns);
+        }
     }
-    c.times.clear();
+    commands.clear();
 }
 
 int run_steps(const StepsOptions& options) {
@@ -93,25 +87,16 @@ int run_steps(const StepsOptions& options) {
     // A bad program leaves no -o file: returning drops the unfinished output with its PartialFile.
     Output out(file->get());
     const bool compress = options.compress_us >= 0;
-    const auto max_error_ns = static_cast<std::int64_t>(options.compress_us * 1000.0);
-    std::vector<AxisCompressor> compressors(machine.axes.size());
+    std::optional<StepQueue> queue;
+    if (compress) queue.emplace(machine.axes.size(), static_cast<std::int64_t>(options.compress_us * 1000.0));
+    std::vector<StepQueueCommand> commands;
     // Phase-table axes' windings, started at the beat of their first position on the first step.
     std::vector<std::optional<drive::PhaseSequencer>> phases(machine.axes.size());
-    std::int64_t events = 0;
-    std::int64_t runs = 0;
 
     auto write = [&](const StepEvent& e) {
-        ++events;
-        if (compress) {
-            AxisCompressor& c = compressors[e.axis];
-            if (e.direction != c.direction || c.times.size() >= (std::size_t{1} << 20)) {
-                flush_axis(e.axis, c, max_error_ns, out.buffer(), runs);
-                if (e.direction != c.direction) {
-                    out.buffer() += fmt::format("set_next_step_dir {} {}\n", e.axis, e.direction);
-                    c.direction = e.direction;
-                }
-            }
-            c.times.push_back(e.t_ns);
+        if (queue) {
+            queue->add(e, commands);
+            print_commands(commands, out.buffer());
         } else if (options.text) {
             const AxisConfig& axis = machine.axes[e.axis];
             if (axis.phase_table == PhaseTableKind::none) {
@@ -139,16 +124,15 @@ int run_steps(const StepsOptions& options) {
     }
     steps.finish();
     while (steps.pop(event)) write(event);
-    if (compress) {
-        for (std::size_t a = 0; a < compressors.size(); ++a) {
-            flush_axis(a, compressors[a], max_error_ns, out.buffer(), runs);
-        }
+    if (queue) {
+        queue->finish(commands);
+        print_commands(commands, out.buffer());
     }
     out.flush();
     if (!file->commit()) return exit_bad_input;
-    if (compress) {
-        fmt::print(stderr, "steps: {} runs: {} compression ratio: {:.2f}\n", events, runs,
-                   runs > 0 ? static_cast<double>(events) / static_cast<double>(runs) : 0.0);
+    if (queue) {
+        fmt::print(stderr, "steps: {} runs: {} compression ratio: {:.2f}\n", queue->steps(), queue->runs(),
+                   queue->compression_ratio());
     }
     return 0;
 }

@@ -1,6 +1,6 @@
 #pragma once
-// What `nckit plan`, `nckit steps` and `nckit servo` share: the program through the interpreter
-// and the streaming planner, each trajectory piece handed on as soon as it is final.
+// nckit::plan_program (the library's interpreter-to-planner loop) for the verbs: its
+// diagnostics printed, the progress line kept up to date.
 #include <functional>
 
 #include "nckit/interp/interpreter.hpp"

@@ -5,6 +5,8 @@
 #include <limits>
 #include <numbers>
 
+#include "nckit/core/bracketed_newton.hpp"
+
 namespace nckit::drive_detail {
 
 namespace {
@@ -87,27 +89,13 @@ std::vector<double> arc_turning_points(const PathSegment& g, std::size_t i) {
 // Stops when a Newton step is below 1e-13 of the length scale, or the bracket is exhausted.
 double arc_crossing_newton(const PathSegment& g, std::size_t i, double spu, double target, double lo, double hi,
                            int direction, double guess) {
-    double x = std::clamp(guess, lo, hi);
+    // Searched as an increasing function: direction * (q(s) * spu - target).
+    const auto residual = [&](double s) {
+        const AxisPoint p = arc_axis_at(g, i, s);
+        return ValueSlope{direction * (p.position * spu - target), direction * p.d1 * spu};
+    };
     const double scale = 1e-13 * std::max(1.0, g.length);
-    for (int iteration = 0; iteration < 200; ++iteration) {
-        const AxisPoint p = arc_axis_at(g, i, x);
-        const double f = direction * (p.position * spu - target);
-        if (f < 0) {
-            lo = x;
-        } else if (f > 0) {
-            hi = x;
-        } else {
-            return x;
-        }
-        const double slope = direction * p.d1 * spu;
-        double next = slope > 0 ? x - f / slope : lo + 0.5 * (hi - lo);
-        if (!(next > lo && next < hi)) next = lo + 0.5 * (hi - lo);
-        if (!(next > lo && next < hi)) return x;  // bracket down to adjacent doubles
-        const double step = std::abs(next - x);
-        x = next;
-        if (step <= scale) return x;
-    }
-    return x;
+    return bracketed_newton(residual, lo, hi, guess, NewtonStop{.step_tolerance = scale, .max_iterations = 200}).x;
 }
 
 bool ArcAxisCrossings::applies(const PathSegment& g, std::size_t i) {

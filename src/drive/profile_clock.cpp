@@ -1,5 +1,7 @@
 #include "profile_clock.hpp"
 
+#include "nckit/core/bracketed_newton.hpp"
+
 namespace nckit::drive_detail {
 
 ProfileClock::ProfileClock(const Profile& profile, PhaseSolver solver) : profile_(profile), solver_(solver) {
@@ -45,8 +47,6 @@ void ProfileClock::enter(int phase, double start_s, double p, double v) {
 // second-order Taylor step off the last root (steps come close together, so the first Newton
 // step is usually already below the tolerance).
 double ProfileClock::newton(double p) {
-    double lo = 0;
-    double hi = duration_;
     double x = guess_ + last_gap_;
     if (have_root_) {
         const double v = v_ + guess_ * (a_ + 0.5 * guess_ * j_);
@@ -57,24 +57,13 @@ double ProfileClock::newton(double p) {
             x = guess_ + d - 0.5 * a * d * d * inv_v;
         }
     }
-    x = std::clamp(x, lo, hi);
-    for (int iteration = 0; iteration < 100; ++iteration) {
-        const double f = p_ + x * (v_ + x * (half_a_ + x * sixth_j_)) - p;
-        if (f < 0) {
-            lo = x;
-        } else if (f > 0) {
-            hi = x;
-        } else {
-            break;
-        }
-        const double slope = v_ + x * (a_ + 0.5 * x * j_);
-        double next = slope > 0 ? x - f / slope : lo + 0.5 * (hi - lo);
-        if (!(next >= lo && next <= hi)) next = lo + 0.5 * (hi - lo);
-        const double step = std::abs(next - x);
-        x = next;
-        // A Newton step this small leaves an error of the order of its square: done.
-        if (step < 1e-10 || hi - lo < 1e-12) break;
-    }
+    const auto residual = [&](double t) {
+        return ValueSlope{p_ + t * (v_ + t * (half_a_ + t * sixth_j_)) - p, v_ + t * (a_ + 0.5 * t * j_)};
+    };
+    // A Newton step below 1e-10 s leaves an error of the order of its square: done.
+    x = bracketed_newton(residual, 0.0, duration_, x,
+                         NewtonStop{.step_tolerance = 1e-10, .bracket_tolerance = 1e-12, .max_iterations = 100})
+            .x;
     last_gap_ = x - guess_;
     guess_ = x;
     have_root_ = true;

@@ -9,7 +9,8 @@ ServoParameters servo_parameters(const AxisServoConfig& config) {
     return ServoParameters::from_natural_frequency(config.gain, config.natural_frequency_hz, config.damping);
 }
 
-ServoFollower::ServoFollower(const MachineConfig& machine) : period_s_(machine.servo_period_s) {
+ServoFollower::ServoFollower(const MachineConfig& machine)
+    : period_s_(machine.servo_period_s), sampler_(machine.servo_period_s, SamplerEnd::through_first_after_end) {
     for (const AxisConfig& axis : machine.axes) {
         if (!axis.servo) continue;
         AxisLoop loop;
@@ -42,41 +43,24 @@ void ServoFollower::take(const TrajectorySample& sample, double t_s, const Sink&
 }
 
 void ServoFollower::add(const TrajectoryPiece& piece, const Sink& sink) {
-    const double end = piece.start_time_s + piece.duration_s;
-    // Sample times are n·period, computed from n so that they never drift.
-    for (;;) {
-        const double t = static_cast<double>(next_index_) * period_s_;
-        if (t >= end) break;
-        take(sample(piece, t), t, sink);
-        ++next_index_;
-    }
-    last_ = piece;
-    end_s_ = std::max(end_s_, end);
-    any_ = true;
+    sampler_.add(piece, [&](const TrajectorySample& s) { take(s, s.t, sink); });
 }
 
 void ServoFollower::finish(const Sink& sink) {
-    if (!any_) return;
-    for (;;) {
-        const double t = static_cast<double>(next_index_) * period_s_;
-        // sample() clamps into the last piece: past the end the setpoint is the end position.
-        take(sample(last_, t), t, sink);
-        ++next_index_;
-        if (t >= end_s_) break;
-    }
+    sampler_.finish([&](const TrajectorySample& s) { take(s, s.t, sink); });
 }
 
 ServoFollowReport ServoFollower::report() const {
     ServoFollowReport out;
-    out.duration_s = end_s_;
-    out.samples = next_index_;
+    out.duration_s = sampler_.end_s();
+    out.samples = sampler_.samples();
     for (const AxisLoop& loop : axes_) {
         FollowingError axis;
         axis.axis = loop.axis;
         axis.max_following_error_mm = loop.max_abs;
         axis.t_max_s = loop.t_max_s;
         axis.rms_following_error_mm =
-            next_index_ > 0 ? std::sqrt(loop.sum_squares / static_cast<double>(next_index_)) : 0.0;
+            sampler_.samples() > 0 ? std::sqrt(loop.sum_squares / static_cast<double>(sampler_.samples())) : 0.0;
         out.axes.push_back(axis);
     }
     return out;

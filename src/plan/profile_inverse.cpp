@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "nckit/core/bracketed_newton.hpp"
+
 namespace nckit::plan_detail {
 
 double ProfileWalker::time_at(double position_mm) {
@@ -21,27 +23,17 @@ double ProfileWalker::time_at(double position_mm) {
         auto pos = [&](double x) { return p_ + x * (v_ + x * (0.5 * a + x * j / 6.0)); };
         const double end_p = pos(tau);
         if (target < end_p || phase_ + 1 == profile_.phase_count) {
-            // Bracketed Newton on pos(x) = target over [0, tau].
-            double lo = 0;
-            double hi = tau;
-            double x = v_ + 0.5 * a * tau > 0 ? std::clamp((target - p_) / std::max(v_, 1e-300), 0.0, tau) : 0.5 * tau;
-            for (int it = 0; it < 100; ++it) {
-                const double f = pos(x) - target;
-                if (f == 0) break;
-                if (f < 0) {
-                    lo = x;
-                } else {
-                    hi = x;
-                }
-                const double slope = v_ + x * (a + 0.5 * x * j);
-                double next = slope > 0 ? x - f / slope : 0.5 * (lo + hi);
-                if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-                if (next == x || hi - lo <= 1e-16 * (phase_start_s_ + tau)) {
-                    x = next;
-                    break;
-                }
-                x = next;
-            }
+            // Bracketed Newton on pos(x) = target over [0, tau], to a bracket of 1e-16 of the
+            // profile time (the resolution of a double there).
+            const double x0 =
+                v_ + 0.5 * a * tau > 0 ? std::clamp((target - p_) / std::max(v_, 1e-300), 0.0, tau) : 0.5 * tau;
+            const auto residual = [&](double x) {
+                return ValueSlope{pos(x) - target, v_ + x * (a + 0.5 * x * j)};
+            };
+            const double x =
+                bracketed_newton(residual, 0.0, tau, x0,
+                                 NewtonStop{.bracket_tolerance = 1e-16 * (phase_start_s_ + tau), .max_iterations = 100})
+                    .x;
             return phase_start_s_ + x;
         }
         p_ = end_p;

@@ -2,36 +2,18 @@
 // The two scalar root finders the profile maths needs.
 #include <cmath>
 
+#include "nckit/core/bracketed_newton.hpp"
+
 namespace nckit::plan_detail {
 
-struct ValueSlope {
-    double value = 0;
-    double slope = 0;
-};
+using nckit::ValueSlope;
 
-//! Root of f, increasing on [lo, hi] with f(lo) <= 0 <= f(hi), starting from x in [lo, hi].
-//! Newton steps converge quadratically on these smooth functions; a step that leaves the
-//! bracket (near a square-root end, or a flat slope) is replaced by bisection, and every
-//! evaluation narrows the bracket, so it cannot diverge or cycle. Stops when |f| <= tolerance
-//! or the bracket is down to adjacent doubles.
+//! Root of f, increasing on [lo, hi] with f(lo) <= 0 <= f(hi), starting from x in [lo, hi]:
+//! nckit's bracketed Newton, stopping when |f| <= tolerance or the bracket is down to adjacent
+//! doubles. Newton steps converge quadratically on these smooth functions.
 template <class F>
 double solve_increasing(F&& f, double lo, double hi, double x, double tolerance) {
-    for (int iteration = 0; iteration < 200; ++iteration) {
-        const ValueSlope fx = f(x);
-        if (std::abs(fx.value) <= tolerance) return x;
-        if (fx.value < 0) {
-            lo = x;
-        } else {
-            hi = x;
-        }
-        double next = x - fx.value / fx.slope;
-        if (!(next > lo && next < hi)) {
-            next = lo + 0.5 * (hi - lo);
-            if (!(next > lo && next < hi)) return x;  // bracket exhausted
-        }
-        x = next;
-    }
-    return x;
+    return bracketed_newton(f, lo, hi, x, NewtonStop{.value_tolerance = tolerance, .max_iterations = 200}).x;
 }
 
 //! The real root of s^3 + p s - m = 0 for p >= 0 and m >= 0 (then it is the only one, and

@@ -5,6 +5,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "nckit/core/bracketed_newton.hpp"
+
 namespace nckit {
 
 namespace {
@@ -72,19 +74,19 @@ double SpindleModel::angle_deg(double t_s) const {
     const double omega_deg_s = std::abs(rpm_) * 6.0;
     const double r = config_.ripple_fraction;
     // ψ − ψ0 lies within ωΔt·(1 ± r): the speed never leaves that band.
-    double low = start + omega_deg_s * dt * (1.0 - r);
-    double high = start + omega_deg_s * dt * (1.0 + r);
-    double psi = start + omega_deg_s * dt;
-    for (int i = 0; i < 100 && high - low > 1e-12 * std::max(1.0, std::abs(psi)); ++i) {
-        const double error_s = travel_time_s(start, psi) - dt;
-        if (error_s > 0) high = psi; else low = psi;
-        const double u = config_.ripple_per_turn * psi * rad_per_deg + sense * config_.ripple_phase_deg * rad_per_deg;
+    const double low = start + omega_deg_s * dt * (1.0 - r);
+    const double high = start + omega_deg_s * dt * (1.0 + r);
+    const double guess = start + omega_deg_s * dt;
+    const double phase_rad = sense * config_.ripple_phase_deg * rad_per_deg;
+    // travel_time_s(start, ψ) − Δt is increasing in ψ with slope 1 / speed.
+    const auto residual = [&](double psi) {
+        const double u = config_.ripple_per_turn * psi * rad_per_deg + phase_rad;
         const double speed_deg_s = omega_deg_s * (1.0 + sense * r * std::sin(u));
-        double next = psi - error_s * speed_deg_s;
-        if (!(next > low && next < high)) next = 0.5 * (low + high);  // Newton left the bracket
-        if (next == psi) break;
-        psi = next;
-    }
+        return ValueSlope{travel_time_s(start, psi) - dt, 1.0 / speed_deg_s};
+    };
+    const double bracket_deg = 1e-12 * std::max(1.0, std::abs(guess));
+    const double psi =
+        bracketed_newton(residual, low, high, guess, NewtonStop{.bracket_tolerance = bracket_deg, .max_iterations = 100}).x;
     return sense * psi;
 }
 

@@ -39,7 +39,8 @@ void PeakTracker::add(const TrajectoryPiece& piece) {
     }
 }
 
-TraceWriter::TraceWriter(const MachineConfig& machine, double period_s) : period_s_(period_s) {
+TraceWriter::TraceWriter(const MachineConfig& machine, double period_s)
+    : sampler_(period_s, SamplerEnd::within_cycle) {
     for (const AxisConfig& axis : machine.axes) axes_.insert(axis.axis);
 }
 
@@ -66,29 +67,11 @@ void TraceWriter::row(const TrajectorySample& s, std::string& out) const {
 }
 
 void TraceWriter::add(const TrajectoryPiece& piece, std::string& out) {
-    const double end = piece.start_time_s + piece.duration_s;
-    // Sample times are k·period, computed from k so that they never drift.
-    for (;;) {
-        double t = static_cast<double>(next_index_) * period_s_;
-        if (t >= end) break;
-        row(sample(piece, t), out);
-        ++next_index_;
-    }
-    last_ = piece;
-    any_ = true;
+    sampler_.add(piece, [&](const TrajectorySample& s) { row(s, out); });
 }
 
 void TraceWriter::finish(std::string& out) {
-    if (!any_) return;
-    const double end = last_.start_time_s + last_.duration_s;
-    for (;;) {
-        double t = static_cast<double>(next_index_) * period_s_;
-        if (t > end + 1e-12) break;
-        TrajectorySample s = sample(last_, t);
-        s.t = t;
-        row(s, out);
-        ++next_index_;
-    }
+    sampler_.finish([&](const TrajectorySample& s) { row(s, out); });
 }
 
 }  // namespace nckit

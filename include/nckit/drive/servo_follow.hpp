@@ -9,6 +9,7 @@
 
 #include "nckit/core/machine.hpp"
 #include "nckit/drive/servo_model.hpp"
+#include "nckit/plan/setpoint_sampler.hpp"
 #include "nckit/plan/trajectory.hpp"
 
 namespace nckit::drive {
@@ -77,10 +78,7 @@ private:
 
     double period_s_;
     std::vector<AxisLoop> axes_;
-    std::int64_t next_index_ = 0;  //!< the next sample's n
-    double end_s_ = 0;             //!< s, the end of the last piece
-    TrajectoryPiece last_;
-    bool any_ = false;
+    SetpointSampler sampler_;  //!< SamplerEnd::through_first_after_end
 };
 
 //! The whole trajectory at once.

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "nckit/core/machine.hpp"
+#include "nckit/plan/setpoint_sampler.hpp"
 #include "nckit/plan/trajectory.hpp"
 
 namespace nckit {
@@ -31,7 +32,8 @@ private:
 
 //! CSV of the trajectory every `period_s`: `t,X,Y,...,vX,...,aX,...,jX,...` for the machine's
 //! axes in X Y Z A B C U V W order, full double precision. Pieces are given in order; finish()
-//! writes the samples at and after the last piece's end, up to the cycle time.
+//! writes the samples at and after the last piece's end, up to the cycle time
+//! (SetpointSampler, SamplerEnd::within_cycle).
 class TraceWriter {
 public:
     TraceWriter(const MachineConfig& machine, double period_s);
@@ -43,10 +45,7 @@ public:
 private:
     void row(const TrajectorySample& sample, std::string& out) const;
     AxisSet axes_;
-    double period_s_;
-    std::int64_t next_index_ = 0;
-    TrajectoryPiece last_;
-    bool any_ = false;
+    SetpointSampler sampler_;
 };
 
 }  // namespace nckit

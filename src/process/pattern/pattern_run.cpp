@@ -4,6 +4,7 @@
 #include <set>
 
 #include "nckit/interp/interpreter.hpp"
+#include "nckit/pipeline/plan_program.hpp"
 #include "nckit/plan/planner.hpp"
 
 namespace nckit::pattern {
@@ -23,20 +24,11 @@ Result<std::array<double, 2>> plan_times(const std::string& program, const Machi
     Interpreter interpreter(machine, ProgramSource::from_string(program, "pattern.nc"));
     Planner planner(machine);
     std::array<double, 2> times{0, 0};
-    TrajectoryPiece piece;
-    auto drain = [&] {
-        while (planner.pop(piece)) times[rapid_lines.count(piece.where.line) ? 0 : 1] += piece.duration_s;
-    };
-    for (;;) {
-        InterpResult r = interpreter.next();
-        if (std::holds_alternative<ProgramEnd>(r)) break;
-        if (auto* d = std::get_if<Diagnostic>(&r)) return *d;
-        planner.push(std::get<Move>(r));
-        if (!planner.diagnostics().empty()) return planner.diagnostics();
-        drain();
-    }
-    planner.finish();
-    drain();
+    const Diagnostics diagnostics = plan_program(
+        interpreter, planner, ProgramPlanCallbacks{.on_piece = [&](const TrajectoryPiece& piece) {
+            times[rapid_lines.count(piece.where.line) ? 0 : 1] += piece.duration_s;
+        }});
+    if (!diagnostics.empty()) return diagnostics;
     return times;
 }
 
