@@ -24,10 +24,11 @@ Result<std::array<double, 2>> plan_times(const std::string& program, const Machi
     Interpreter interpreter(machine, ProgramSource::from_string(program, "pattern.nc"));
     Planner planner(machine);
     std::array<double, 2> times{0, 0};
-    const Diagnostics diagnostics = plan_program(
-        interpreter, planner, ProgramPlanCallbacks{.on_piece = [&](const TrajectoryPiece& piece) {
-            times[rapid_lines.count(piece.where.line) ? 0 : 1] += piece.duration_s;
-        }});
+    ProgramPlanCallbacks callbacks;
+    callbacks.on_piece = [&](const TrajectoryPiece& piece) {
+        times[rapid_lines.count(piece.where.line) ? 0 : 1] += piece.duration_s;
+    };
+    const Diagnostics diagnostics = plan_program(interpreter, planner, callbacks);
     if (!diagnostics.empty()) return diagnostics;
     return times;
 }
