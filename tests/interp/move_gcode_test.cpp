@@ -18,26 +18,43 @@ std::string expanded(std::string_view program, const MachineConfig& machine = de
 
 TEST(GcodeWriter, OneBlockPerMoveWithItsSourceLine) {
     EXPECT_EQ(expanded("G0 X1\nG1 Y2 F100\nM30\n"),
-              "G0 X1.0000 Y0.0000 Z0.0000 (test.ngc:1)\n"
-              "G1 X1.0000 Y2.0000 Z0.0000 F100.0000 (test.ngc:2)\n"
+              "G0 X1.0 Y0.0 Z0.0 (test.ngc:1)\n"
+              "G1 X1.0 Y2.0 Z0.0 F100.0 (test.ngc:2)\n"
               "M30 (test.ngc:3)\n");
 }
 
 TEST(GcodeWriter, ExactStopAndBlendToleranceAreWritten) {
     // G9 has no LinuxCNC twin: it becomes G61 for its move and the blend mode comes back after.
     EXPECT_EQ(expanded("G61\nG1 X10 F500\nG64 P0.02\nG1 X20\nG9 G1 X30\nG1 X40\n"),
-              "G61 G1 X10.0000 Y0.0000 Z0.0000 F500.0000 (test.ngc:2)\n"
-              "G64 P0.02 G1 X20.0000 Y0.0000 Z0.0000 (test.ngc:4)\n"
-              "G61 G1 X30.0000 Y0.0000 Z0.0000 (test.ngc:5)\n"
-              "G64 P0.02 G1 X40.0000 Y0.0000 Z0.0000 (test.ngc:6)\n"
+              "G61 G1 X10.0 Y0.0 Z0.0 F500.0 (test.ngc:2)\n"
+              "G64 P0.02 G1 X20.0 Y0.0 Z0.0 (test.ngc:4)\n"
+              "G61 G1 X30.0 Y0.0 Z0.0 (test.ngc:5)\n"
+              "G64 P0.02 G1 X40.0 Y0.0 Z0.0 (test.ngc:6)\n"
               "M30\n");
 }
 
 TEST(GcodeWriter, ArcsCarryTheirPlaneAndIncrementalCentre) {
     EXPECT_EQ(expanded("G0 X10\nG18 G2 X20 Z0 I5 K0 F200\n"),
-              "G0 X10.0000 Y0.0000 Z0.0000 (test.ngc:1)\n"
-              "G18 G2 X20.0000 Y0.0000 Z0.0000 K0.0000 I5.0000 F200.0000 (test.ngc:2)\n"
+              "G0 X10.0 Y0.0 Z0.0 (test.ngc:1)\n"
+              "G18 G2 X20.0 Y0.0 Z0.0 K0.0 I5.0 F200.0 (test.ngc:2)\n"
               "M30\n");
+}
+
+TEST(GcodeWriter, CoordinatesReadBackExactlyWithoutExponents) {
+    // A third of a millimetre has no short decimal: all 17 significant digits are written, and a
+    // tiny offset is written in plain decimals, never as 1e-07.
+    EXPECT_EQ(expanded("G1 X[1/3] Y0.0000001 F[100/3]\n"),
+              "G1 X0.3333333333333333 Y0.0000001 Z0.0 F33.333333333333336 (test.ngc:1)\n"
+              "M30\n");
+}
+
+TEST(GcodeWriter, RoundedCoordinatesReportTheirWorstDeviation) {
+    GcodeWriter writer(default_mill());
+    writer.round_to_decimals(3);
+    std::string out;
+    for (const Move& move : moves_of("G1 X[1/3] Y2.0004 F[100/3]\n", default_mill())) writer.append(out, move);
+    EXPECT_EQ(out, "G1 X0.333 Y2.000 Z0.000 F33.333333333333336 (test.ngc:1)\n");
+    EXPECT_NEAR(writer.worst_deviation_mm(), 0.0004, 1e-12);
 }
 
 }  // namespace
