@@ -40,22 +40,5 @@ TEST(GcodeWriter, ArcsCarryTheirPlaneAndIncrementalCentre) {
               "M30\n");
 }
 
-TEST(GcodeWriter, CoordinatesReadBackExactlyWithoutExponents) {
-    // A third of a millimetre has no short decimal: all 17 significant digits are written, and a
-    // tiny offset is written in plain decimals, never as 1e-07.
-    EXPECT_EQ(expanded("G1 X[1/3] Y0.0000001 F[100/3]\n"),
-              "G1 X0.3333333333333333 Y0.0000001 Z0.0 F33.333333333333336 (test.ngc:1)\n"
-              "M30\n");
-}
-
-TEST(GcodeWriter, RoundedCoordinatesReportTheirWorstDeviation) {
-    GcodeWriter writer(default_mill());
-    writer.round_to_decimals(3);
-    std::string out;
-    for (const Move& move : moves_of("G1 X[1/3] Y2.0004 F[100/3]\n", default_mill())) writer.append(out, move);
-    EXPECT_EQ(out, "G1 X0.333 Y2.000 Z0.000 F33.333333333333336 (test.ngc:1)\n");
-    EXPECT_NEAR(writer.worst_deviation_mm(), 0.0004, 1e-12);
-}
-
 }  // namespace
 }  // namespace nckit::test
