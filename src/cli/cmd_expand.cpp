@@ -1,6 +1,8 @@
 // nckit expand FILE: the program with every macro resolved, as a plain program of one move per
 // block. With -o the file appears only when the whole program ran clean.
+#include <cstdint>
 #include <cstdio>
+#include <string>
 #include <variant>
 
 #include <fmt/format.h>
@@ -18,6 +20,8 @@ struct ExpandOptions {
     std::string program;
     std::string output;
     MachineOptions machine;
+    int decimals = -1;  //!< --decimals; -1: exact
+    bool json = false;
 };
 
 int run_expand(const ExpandOptions& options) {
@@ -31,6 +35,8 @@ int run_expand(const ExpandOptions& options) {
     }
     std::FILE* out = file ? file->get() : stdout;
     GcodeWriter writer(interpreter->machine());
+    writer.round_to_decimals(options.decimals);
+    std::int64_t moves = 0;
     std::string buffer;
     writer.append_header(buffer, options.program);
     for (;;) {
@@ -42,6 +48,7 @@ int run_expand(const ExpandOptions& options) {
             return exit_bad_input;  // an unfinished -o file goes with its PartialFile
         }
         writer.append(buffer, std::get<Move>(result));
+        ++moves;
         if (buffer.size() > (1 << 16)) {
             std::fwrite(buffer.data(), 1, buffer.size(), out);
             buffer.clear();
@@ -50,6 +57,14 @@ int run_expand(const ExpandOptions& options) {
     writer.append_footer(buffer);
     std::fwrite(buffer.data(), 1, buffer.size(), out);
     if (file && !file->commit()) return exit_bad_input;
+    if (options.json) {
+        fmt::print("{{\"moves\":{},\"decimals\":{},\"worst_deviation_mm\":{}}}\n", moves,
+                   options.decimals < 0 ? std::string("null") : std::to_string(options.decimals),
+                   json_number(writer.worst_deviation_mm()));
+    } else if (options.decimals >= 0) {
+        fmt::print(stderr, "expand: coordinates rounded to {} decimals, worst deviation {} mm\n",
+                   options.decimals, json_number(writer.worst_deviation_mm()));
+    }
     return 0;
 }
 
@@ -60,6 +75,11 @@ void add_expand_verb(CLI::App& app, int& exit_status) {
     CLI::App* verb = app.add_subcommand("expand", "Resolve macros and calls into a plain program, one move per block");
     verb->add_option("FILE", options->program, "NC program ('-': standard input)")->required();
     verb->add_option("-o,--output", options->output, "write the program here (default: standard output)");
+    verb->add_option("--decimals", options->decimals,
+                     "round coordinates to N decimals for a control that reads fewer (default: exact)")
+        ->check(CLI::Range(0, 17));
+    CLI::Option* output = verb->get_option("--output");
+    verb->add_flag("--json", options->json, "print a JSON summary (moves, worst deviation); needs -o")->needs(output);
     add_machine_options(*verb, options->machine);
     verb->callback([options, &exit_status] { exit_status = run_expand(*options); });
 }

@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
     nckit::cli::add_moves_verb(app, exit_status);
     nckit::cli::add_check_verb(app, exit_status);
     nckit::cli::add_expand_verb(app, exit_status);
+    nckit::cli::add_restart_verb(app, exit_status);
     nckit::cli::add_plan_verb(app, exit_status);
     nckit::cli::add_steps_verb(app, exit_status);
     nckit::cli::add_servo_verb(app, exit_status);

@@ -7,6 +7,7 @@ namespace nckit::cli {
 void add_moves_verb(CLI::App& app, int& exit_status);
 void add_check_verb(CLI::App& app, int& exit_status);
 void add_expand_verb(CLI::App& app, int& exit_status);
+void add_restart_verb(CLI::App& app, int& exit_status);
 void add_plan_verb(CLI::App& app, int& exit_status);
 void add_steps_verb(CLI::App& app, int& exit_status);
 void add_servo_verb(CLI::App& app, int& exit_status);

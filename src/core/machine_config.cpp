@@ -140,6 +140,9 @@ void read_machine(const toml::table& table, MachineConfig& config, ConfigSink& s
         config.dialect = dialects[*i];
     }
     read_subroutine_path(reader, config, sink);
+    // nckit restart: where the tool retracts to before it comes back to the restart point.
+    if (std::optional<double> safe = reader.number("restart_safe_mm", Need::optional)) config.restart_safe_mm = *safe;
+    reader.number_into("restart_feed_mm_min", Need::optional, Sign::positive, config.restart_feed_mm_min);
     constexpr std::array profiles{ProfileKind::scurve, ProfileKind::trapezoid};
     if (auto i = reader.choice("profile", Need::optional, "profile", {"scurve", "trapezoid"})) {
         config.profile = profiles[*i];

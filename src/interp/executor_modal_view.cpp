@@ -21,6 +21,12 @@ ModalView Executor::modal_view() const {
     view.constant_surface_speed = modal_.spindle.constant_surface_speed;
     view.surface_speed_m_min = modal_.spindle.surface_speed_m_min;
     view.tool = modal_.tool.selected;
+    view.tool_in_spindle = modal_.tool.in_spindle;
+    view.length_offset_h = modal_.tool.h_number;
+    view.length_offset_code = modal_.tool.length_mode;
+    view.tool_offset = modal_.tool_offset;
+    view.cutter_compensation = comp_.engaged();
+    view.transform_active = transform_.active();
     return view;
 }
 

@@ -22,6 +22,7 @@ struct Interpreter::State {
     std::optional<InterpResult> fill(std::vector<Move>& out) { return ngc ? ngc->fill(out) : runner->fill(out); }
     [[nodiscard]] bool recoverable() const { return ngc ? ngc->error_is_recoverable() : runner->error_is_recoverable(); }
     std::vector<Move> pending;
+    std::uint64_t batches = 0;
     std::size_t next_pending = 0;
     std::optional<InterpResult> finished;  // ProgramEnd or Diagnostic, repeated once reached
 
@@ -49,12 +50,15 @@ std::uint64_t Interpreter::main_program_offset() const {
     return state_->ngc ? state_->ngc->main_program_offset() : state_->runner->main_program_offset();
 }
 
+std::uint64_t Interpreter::output_batch() const { return state_->batches; }
+
 InterpResult Interpreter::next() {
     State& s = *state_;
     while (s.next_pending == s.pending.size()) {
         if (s.finished) return *s.finished;
         s.pending.clear();
         s.next_pending = 0;
+        ++s.batches;
         // The moves of the block that ended the program still go out before the end.
         if (auto stop = s.fill(s.pending)) {
             if (s.options.keep_going_after_errors && s.recoverable() &&

@@ -1,5 +1,6 @@
 #include "nckit/interp/move_gcode.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iterator>
@@ -7,32 +8,12 @@
 
 #include <fmt/format.h>
 
-#include "nckit/core/format_fixed.hpp"
+#include "nckit/core/format_exact.hpp"
 #include "nckit/interp/arc_geometry.hpp"
 
 namespace nckit {
 
 namespace {
-
-void word(std::string& out, std::string_view letter, double value) {
-    out += ' ';
-    out += letter;
-    append_fixed4(out, std::abs(value) < 5e-5 ? 0.0 : value);
-}
-
-//! A word that four decimals in mm do not hold: feeds, which no input increment rounds (F[#9 / 3]
-//! is 266.666..., F[0.25 / 3] mm/rev 0.08333...), and thread leads given in inches (K0.0769 is
-//! 1.95326 mm). Four decimals would be off by up to 5e-5, which G95 multiplies by the rpm and a
-//! thread by its turns; up to 10 decimals are written, trailing zeros dropped down to 4.
-void precise_word(std::string& out, std::string_view letter, double value) {
-    out += ' ';
-    out += letter;
-    if (std::abs(value) < 5e-11) value = 0.0;
-    std::string text = fmt::format("{:.10f}", value);
-    std::size_t keep = text.find('.') + 5;
-    while (text.size() > keep && text.back() == '0') text.pop_back();
-    out += text;
-}
 
 const char* plane_code(Plane plane) {
     switch (plane) {
@@ -80,16 +61,21 @@ void GcodeWriter::append_header(std::string& out, const std::string& source_name
     if (machine_.diameter_mode) out += "G8\n";
 }
 
-void GcodeWriter::append_axes(std::string& out, const AxisVector& position) const {
+void GcodeWriter::number(std::string& out, char letter, double value) {
+    out += ' ';
+    out += letter;
+    if (decimals_ < 0) {
+        append_exact(out, value);
+    } else {
+        worst_deviation_mm_ = std::max(worst_deviation_mm_, append_rounded(out, value, decimals_));
+    }
+}
+
+void GcodeWriter::append_axes(std::string& out, const AxisVector& position) {
     for (std::size_t i = 0; i < axis_count; ++i) {
         auto axis = static_cast<Axis>(i);
         if (machine_.find(axis) == nullptr) continue;
-        const char name[1] = {letter(axis)};
-        if (precise_positions_) {
-            precise_word(out, std::string_view(name, 1), position[axis]);
-        } else {
-            word(out, std::string_view(name, 1), position[axis]);
-        }
+        number(out, letter(axis), position[axis]);
     }
 }
 
@@ -101,7 +87,10 @@ void GcodeWriter::append_feed(std::string& out, const Feed& feed) {
         feed_ = -1;
     }
     if (value != feed_) {
-        precise_word(out, "F", value);
+        // Feeds are never rounded: no input increment applies to them, and under G95 or in a
+        // thread an error is multiplied by the rpm or the turns.
+        out += " F";
+        append_exact(out, value);
         feed_ = value;
     }
 }
@@ -111,7 +100,9 @@ void GcodeWriter::append_path(std::string& out, const PathControl& path) {
     if (path.exact_stop) {
         out += "G61 ";
     } else if (path.tolerance_mm > 0) {
-        fmt::format_to(std::back_inserter(out), "G64 P{} ", path.tolerance_mm);
+        out += "G64 P";
+        append_exact(out, path.tolerance_mm);
+        out += ' ';
     } else {
         out += "G64 ";
     }
@@ -138,16 +129,17 @@ void GcodeWriter::append(std::string& out, const Move& move) {
                 append_axes(out, m.to);
                 PlaneAxes p = plane_axes(m.plane);
                 for (Axis axis : {p.first, p.second}) {
-                    const char name[1] = {offset_letter(axis)};
-                    word(out, std::string_view(name, 1), m.center[axis] - m.from[axis]);
+                    number(out, offset_letter(axis), m.center[axis] - m.from[axis]);
                 }
                 append_feed(out, m.feed);
             } else if constexpr (std::is_same_v<T, SyncMove>) {
                 out += "G33";
                 append_axes(out, m.to);
-                precise_word(out, "K", m.feed.mm_per_rev);  // the lead, mm/rev (LinuxCNC and nckit read K)
+                out += " K";  // the lead, mm/rev (LinuxCNC and nckit read K), never rounded
+                append_exact(out, m.feed.mm_per_rev);
             } else if constexpr (std::is_same_v<T, Dwell>) {
-                fmt::format_to(std::back_inserter(out), "G4 P{}", m.seconds * 1000.0);
+                out += "G4 P";
+                append_exact(out, m.seconds * 1000.0);
             } else if constexpr (std::is_same_v<T, Io>) {
                 switch (m.kind) {
                     case IoKind::mcode:
@@ -159,11 +151,15 @@ void GcodeWriter::append(std::string& out, const Move& move) {
                         if (m.constant_surface_speed) {
                             // LinuxCNC's form of the clamp (G96 D) rather than Fanuc's G50 S.
                             out += "G96";
-                            if (m.rpm_clamp > 0) fmt::format_to(std::back_inserter(out), " D{}", m.rpm_clamp);
-                            fmt::format_to(std::back_inserter(out), " S{}", m.value);
+                            if (m.rpm_clamp > 0) {
+                                out += " D";
+                                append_exact(out, m.rpm_clamp);
+                            }
+                            out += " S";
                         } else {
-                            fmt::format_to(std::back_inserter(out), "G97 S{}", m.value);
+                            out += "G97 S";
                         }
+                        append_exact(out, m.value);
                         break;
                 }
             }

@@ -20,9 +20,9 @@ Result<NotchJob> notch_program(const std::vector<Move>& moves, const MachineConf
     // original text with blocks changed: shortening an approach or inserting moves in a
     // program with incremental moves, macros or calls would shift everything after it.
     GcodeWriter writer(machine);
-    // Run-up and overrun points lie on the cut line in the cut's direction; four decimals would
-    // round them off it, and the planner would blend the bend below feed.
-    writer.write_precise_positions(true);
+    // Run-up and overrun points lie on the cut line in the cut's direction: the writer's exact
+    // decimals keep them on it (rounded ones would bend the line, and the planner would blend
+    // the bend below feed).
     writer.append_header(job.program, source_name);
     for (const Move& move : rewrite->moves) writer.append(job.program, move);
     writer.append_footer(job.program);

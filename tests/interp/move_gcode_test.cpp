@@ -18,25 +18,25 @@ std::string expanded(std::string_view program, const MachineConfig& machine = de
 
 TEST(GcodeWriter, OneBlockPerMoveWithItsSourceLine) {
     EXPECT_EQ(expanded("G0 X1\nG1 Y2 F100\nM30\n"),
-              "G0 X1.0000 Y0.0000 Z0.0000 (test.ngc:1)\n"
-              "G1 X1.0000 Y2.0000 Z0.0000 F100.0000 (test.ngc:2)\n"
+              "G0 X1.0 Y0.0 Z0.0 (test.ngc:1)\n"
+              "G1 X1.0 Y2.0 Z0.0 F100.0 (test.ngc:2)\n"
               "M30 (test.ngc:3)\n");
 }
 
 TEST(GcodeWriter, ExactStopAndBlendToleranceAreWritten) {
     // G9 has no LinuxCNC twin: it becomes G61 for its move and the blend mode comes back after.
     EXPECT_EQ(expanded("G61\nG1 X10 F500\nG64 P0.02\nG1 X20\nG9 G1 X30\nG1 X40\n"),
-              "G61 G1 X10.0000 Y0.0000 Z0.0000 F500.0000 (test.ngc:2)\n"
-              "G64 P0.02 G1 X20.0000 Y0.0000 Z0.0000 (test.ngc:4)\n"
-              "G61 G1 X30.0000 Y0.0000 Z0.0000 (test.ngc:5)\n"
-              "G64 P0.02 G1 X40.0000 Y0.0000 Z0.0000 (test.ngc:6)\n"
+              "G61 G1 X10.0 Y0.0 Z0.0 F500.0 (test.ngc:2)\n"
+              "G64 P0.02 G1 X20.0 Y0.0 Z0.0 (test.ngc:4)\n"
+              "G61 G1 X30.0 Y0.0 Z0.0 (test.ngc:5)\n"
+              "G64 P0.02 G1 X40.0 Y0.0 Z0.0 (test.ngc:6)\n"
               "M30\n");
 }
 
 TEST(GcodeWriter, ArcsCarryTheirPlaneAndIncrementalCentre) {
     EXPECT_EQ(expanded("G0 X10\nG18 G2 X20 Z0 I5 K0 F200\n"),
-              "G0 X10.0000 Y0.0000 Z0.0000 (test.ngc:1)\n"
-              "G18 G2 X20.0000 Y0.0000 Z0.0000 K0.0000 I5.0000 F200.0000 (test.ngc:2)\n"
+              "G0 X10.0 Y0.0 Z0.0 (test.ngc:1)\n"
+              "G18 G2 X20.0 Y0.0 Z0.0 K0.0 I5.0 F200.0 (test.ngc:2)\n"
               "M30\n");
 }
 

@@ -5,8 +5,9 @@ For every program (`NN_name.nc` or `NN_name.ngc`) it runs `nckit expand PROGRAM 
 then `nckit moves --json` on the original and on the expanded program (same machine), and
 compares the two record streams in order: every record's kind; for rapids, feeds, arcs and
 synchronised moves the end point on every axis, for arcs the centre, direction, plane and turns,
-the feed (`feed_mm_min`, and `feed_mm_rev` under G95), all to 1e-4 (mm, deg, mm/min, mm/rev), and
-whether the move ends in an exact stop (G61, G9); for dwells the time (1e-6 s); for I/O events the
+the feed (`feed_mm_min`, and `feed_mm_rev` under G95), all to 1e-9 (mm, deg, mm/min, mm/rev): expand
+writes as many decimals as it takes to read back the same doubles; and
+whether the move ends in an exact stop (G61, G9); for dwells the time (1e-9 s); for I/O events the
 code and its spindle speed. Source lines differ by design and are not compared.
 
 The machine comes from a `( nckit-machine: FILE )` comment in the program's first 5 lines
@@ -34,8 +35,8 @@ REPO = HERE.parents[1]
 DEFAULT_NCKIT = REPO / "build" / "release" / "src" / "nckit"
 DEFAULT_MACHINES = REPO / "examples" / "machines"
 
-TOL = 1e-4
-DWELL_TOL_S = 1e-6
+TOL = 1e-9
+DWELL_TOL_S = 1e-9
 MOTION_KINDS = {"rapid", "linear", "arc", "sync"}
 DIRECTIVE_RE = re.compile(r"nckit-(machine|block-delete)\s*:\s*([^\s)]+)", re.IGNORECASE)
 

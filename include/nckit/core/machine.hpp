@@ -134,6 +134,11 @@ struct MachineConfig {
     std::string tools_file;         //!< where `tools` came from; empty for none
     //! `[probe] surfaces`: where G31 skips; empty: a G31 never meets anything (an error).
     std::vector<ProbeSurface> probe_surfaces;
+    //! `restart_safe_mm`: where `nckit restart` retracts the tool before its approach, a machine
+    //! coordinate of the retract axis (Z; X on a lathe); unset: that axis's `max` travel limit.
+    std::optional<double> restart_safe_mm;
+    //! `restart_feed_mm_min`: feed of the restart approach's last move onto the restart point.
+    double restart_feed_mm_min = 100;
     //! `[inputs]`: #1000-#1199 that read a value other than 0.
     std::vector<MacroInput> macro_inputs;
 

@@ -79,6 +79,11 @@ public:
     //! block that made them (a block's moves come out together, after its modes are set).
     [[nodiscard]] ModalView modal_view() const;
 
+    //! Counts the times the interpreter ran blocks to refill its output: moves returned since
+    //! the last change of this number came from one run of the blocks (a block run again in a
+    //! loop shows up under a new number, though its source line is the same).
+    [[nodiscard]] std::uint64_t output_batch() const;
+
 private:
     struct State;
     std::unique_ptr<State> state_;

@@ -28,6 +28,12 @@ struct ModalView {
     bool constant_surface_speed = false;  //!< G96
     double surface_speed_m_min = 0;       //!< G96 S, m/min
     int tool = 0;                   //!< last T word
+    int tool_in_spindle = 0;        //!< the tool M6 put in
+    int length_offset_h = 0;        //!< modal H number
+    int length_offset_code = 490;   //!< G43 = 430, G44 = 440, G43.1 = 431, G49 = 490
+    AxisVector tool_offset;         //!< tool length offset in force, machine mm
+    bool cutter_compensation = false;  //!< G41/G42 engaged: a move's end depends on the next
+    bool transform_active = false;  //!< G51.1 mirror, G51 scaling or G68 rotation in force
 };
 
 }  // namespace nckit

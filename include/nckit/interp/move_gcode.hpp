@@ -13,12 +13,25 @@ class GcodeWriter {
 public:
     explicit GcodeWriter(const MachineConfig& machine) : machine_(machine) {}
 
-    //! End points with up to 10 decimals instead of 4: a point placed on an oblique line (a
-    //! notch's run-up) stays on it within 5e-11 mm instead of bending the line by up to 5e-5 mm.
-    void write_precise_positions(bool precise) { precise_positions_ = precise; }
+    //! Coordinates (end points, arc centre offsets) rounded to `decimals` places for a control
+    //! that reads fewer; negative (the default): as many decimals as it takes to read back the
+    //! very same doubles. Feeds, leads, speeds and times are always written exactly.
+    void round_to_decimals(int decimals) { decimals_ = decimals; }
+    //! The largest distance between a coordinate written and its exact value so far, mm / deg
+    //! (0 unless rounding).
+    [[nodiscard]] double worst_deviation_mm() const { return worst_deviation_mm_; }
 
     //! The opening blocks: units, distance mode, plane, offsets cleared, radius mode.
     void append_header(std::string& out, const std::string& source_name) const;
+
+    //! The modes blocks written by hand before the next move left in force (a restart program's
+    //! preamble), so that the next move writes only what differs from them.
+    void assume_modes(Plane plane, FeedMode feed_mode, double feed, PathControl path) {
+        plane_ = plane;
+        feed_mode_ = feed_mode;
+        feed_ = feed;
+        path_ = path;
+    }
 
     //! One block for the move, ending in a comment that names its source file and line.
     void append(std::string& out, const Move& move);
@@ -27,7 +40,8 @@ public:
     void append_footer(std::string& out) const;
 
 private:
-    void append_axes(std::string& out, const AxisVector& position) const;
+    void number(std::string& out, char letter, double value);
+    void append_axes(std::string& out, const AxisVector& position);
     void append_feed(std::string& out, const Feed& feed);
     //! G61 or G64 P before a move whose path control differs from the last one written; a G9
     //! block becomes G61 for that one move, since LinuxCNC has no G9.
@@ -39,7 +53,8 @@ private:
     double feed_ = -1;         // the F last written, in its mode's unit
     PathControl path_;         // G64 with no tolerance, as the header sets
     bool ended_ = false;
-    bool precise_positions_ = false;
+    int decimals_ = -1;
+    double worst_deviation_mm_ = 0;
 };
 
 }  // namespace nckit

@@ -1,0 +1,76 @@
+#pragma once
+// Restarting a program in the middle (after a power cut or a broken tool): the program runs in
+// search mode up to a target block, then a new program is written that rebuilds the state the
+// rest depends on, brings the tool back to where the target block starts, and goes on with the
+// rest of the original run as plain absolute moves (docs/restart.md).
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "nckit/core/axes.hpp"
+#include "nckit/core/result.hpp"
+#include "nckit/interp/interpreter.hpp"
+#include "nckit/interp/modal_view.hpp"
+
+namespace nckit {
+
+//! Where to restart: the k-th time sequence number N is reached, the first time a block of
+//! the main program's source line L runs, or the B-th executed block. Only blocks that make a
+//! move or an I/O event count; a block run again in a loop or a call counts again.
+struct RestartTarget {
+    enum class Kind { sequence, line, block };
+    Kind kind = Kind::block;
+    std::int64_t number = 1;      //!< N, L or B
+    std::int64_t occurrence = 1;  //!< k (sequence only)
+};
+
+//! The spindle, tool and I/O state the events before the target left, which a restart program
+//! must switch on again before it moves.
+struct RestartIo {
+    int tool_selected = 0;     //!< last T word, 0 for none
+    int tool_in_spindle = 0;   //!< the T last put in by M6, 0 for none
+    bool speed_set = false;    //!< an S word ran
+    double speed = 0;          //!< rpm, or m/min under G96
+    bool constant_surface_speed = false;
+    double rpm_clamp = 0;      //!< G96's clamp (G50 S / D), rpm; 0 = none
+    int spindle_mcode = 5;     //!< 3, 4 or 5
+    double spindle_rpm = 0;    //!< the rpm the M3/M4 event carried
+    bool mist = false;         //!< M7
+    bool flood = false;        //!< M8
+    std::vector<int> laser_on; //!< laser on-codes in force (the machine's laser_on_mcodes)
+};
+
+//! How the tool comes back: retract, rapid over the point, take up backlash, feed down.
+struct RestartApproach {
+    Axis retract_axis = Axis::Z;
+    double safe_mm = 0;                  //!< retract axis, machine coordinate
+    AxisVector point;                    //!< where the target block starts, machine mm / deg
+    std::array<int, axis_count> side{};  //!< +1 / -1: the direction the original path last moved each axis
+    double takeup_mm = 0;                //!< how far before the point each axis turns
+    double clearance_mm = 0;             //!< the retract axis's rapid stops this far before the point
+    double feed_mm_min = 0;              //!< the last, fed move
+    bool moves = false;                  //!< false when nothing moves from the target on
+};
+
+struct RestartReport {
+    SourceLocation where;             //!< the target block
+    std::int64_t sequence_number = -1;
+    std::int64_t block = 0;           //!< the target's ordinal among executed blocks, 1-based
+    std::int64_t first_record = 0;    //!< index of its first move in the original run, 0-based
+    std::uint32_t rest_line = 0;      //!< line of the restart program where the rest begins
+    ModalView state;                  //!< modal state in force before the target block
+    RestartIo io;
+    RestartApproach approach;
+    double worst_deviation_mm = 0;    //!< with rounding (decimals >= 0)
+};
+
+//! Runs `interpreter` from its start to the target without motion and writes the restart
+//! program into `out`. Refuses a target inside cutter compensation or in the middle of a thread
+//! (the error names the block and, for a thread, the pass's first block), or one never reached.
+//! `decimals` < 0 writes coordinates exactly (see GcodeWriter::round_to_decimals).
+[[nodiscard]] Result<RestartReport> write_restart(Interpreter& interpreter, const RestartTarget& target,
+                                                  const std::string& source_name, std::string& out,
+                                                  int decimals = -1);
+
+}  // namespace nckit
