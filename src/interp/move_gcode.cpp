@@ -45,6 +45,12 @@ void source_comment(std::string& out, const SourceLocation& where) {
 
 }  // namespace
 
+const char* feed_mode_code(FeedMode mode, const MachineConfig& machine) {
+    const bool per_revolution = mode == FeedMode::per_revolution;
+    if (machine.gcode_system == GCodeSystem::a) return per_revolution ? "G99" : "G98";
+    return per_revolution ? "G95" : "G94";
+}
+
 void GcodeWriter::append_header(std::string& out, const std::string& source_name) const {
     fmt::format_to(std::back_inserter(out), "( {} expanded by nckit for machine {} )\n",
                    comment_text(std::filesystem::path(source_name).filename().string()),
@@ -53,7 +59,14 @@ void GcodeWriter::append_header(std::string& out, const std::string& source_name
     // Offsets cleared (G54, and G92, which LinuxCNC keeps between programs) so that program
     // coordinates are machine coordinates; radius mode because the moves carry radii whatever
     // the program wrote.
-    out += "G21 G90 G94 G17 G40 G49 G80 G54 G64\n";
+    // Lathe system A has no G90/G91 (U and W are the incremental words) and its G90, G94 are
+    // turning and facing cycles.
+    if (machine_.gcode_system == GCodeSystem::a) {
+        out += "G21 G98 G18 G40 G80 G54 G64\n";
+    } else {
+        fmt::format_to(std::back_inserter(out), "G21 G90 {} G17 G40 G49 G80 G54 G64\n",
+                       feed_mode_code(FeedMode::per_minute, machine_));
+    }
     out += "G92.1\n";
     out += "G10 L2 P1";
     for (const AxisConfig& axis : machine_.axes) fmt::format_to(std::back_inserter(out), " {}0", letter(axis.axis));
@@ -82,7 +95,8 @@ void GcodeWriter::append_axes(std::string& out, const AxisVector& position) {
 void GcodeWriter::append_feed(std::string& out, const Feed& feed) {
     double value = feed.mode == FeedMode::per_revolution ? feed.mm_per_rev : feed.mm_per_min;
     if (feed.mode != feed_mode_) {
-        out += feed.mode == FeedMode::per_revolution ? " G95" : " G94";
+        out += ' ';
+        out += feed_mode_code(feed.mode, machine_);
         feed_mode_ = feed.mode;
         feed_ = -1;
     }

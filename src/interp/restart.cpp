@@ -128,7 +128,7 @@ void frame_comments(std::string& out, const ModalView& s, const MachineConfig& m
     };
     fmt::format_to(std::back_inserter(out), "( program state: {} {} {} {}{} G{} offset{} )\n",
                    s.length_factor_mm == 1.0 ? "G21" : "G20", s.incremental ? "G91" : "G90", plane_code(s.plane),
-                   s.feed_mode == FeedMode::per_revolution ? "G95" : "G94", s.diameter_mode ? " G7" : "",
+                   feed_mode_code(s.feed_mode, machine), s.diameter_mode ? " G7" : "",
                    54 + s.work_system, vector_text(s.work_offset));
     fmt::format_to(std::back_inserter(out), "( G92{} G52{} )\n", vector_text(s.g92_offset), vector_text(s.g52_offset));
     fmt::format_to(std::back_inserter(out), "( tool length G{}{} H{}{}{} )\n", s.length_offset_code / 10,
@@ -168,7 +168,8 @@ void approach_blocks(std::string& out, RestartApproach& a, const MachineConfig& 
     const Axis r = a.retract_axis;
     const double away = a.safe_mm >= a.point[r] ? 1.0 : -1.0;
     out += "( approach: retract, rapid over the restart point from the side the path came, feed onto it )\n";
-    out += "G94 G64 G0";
+    out += feed_mode_code(FeedMode::per_minute, machine);
+    out += " G64 G0";
     axis_word(out, r, a.safe_mm, decimals, worst);
     out += '\n';
     std::string before = "G0";
@@ -317,8 +318,7 @@ Result<RestartReport> write_restart(Interpreter& interpreter, const RestartTarge
             if (a.moves) approach_blocks(out, a, machine, decimals, report.worst_deviation_mm);
             for (int m : report.io.laser_on) fmt::format_to(std::back_inserter(out), "M{}\n", m);
             const ModalView& s = report.state;
-            fmt::format_to(std::back_inserter(out), "{} {}", plane_code(s.plane),
-                           s.feed_mode == FeedMode::per_revolution ? "G95" : "G94");
+            fmt::format_to(std::back_inserter(out), "{} {}", plane_code(s.plane), feed_mode_code(s.feed_mode, machine));
             if (s.feed > 0) {
                 out += " F";
                 append_exact(out, s.feed);

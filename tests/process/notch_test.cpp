@@ -92,10 +92,10 @@ TEST(Notch, ConrodRunsTheWholeCutAtFeedAfterRewriting) {
     EXPECT_NEAR(cut.after.profile.back()[0], -33.63, 1e-6);
     // The beam goes off at the programmed end by position (M128 is no exact stop), and the
     // laser-on M-code sits at the run-up point.
-    EXPECT_NE(job->program.find("Z-14.6390 F5000"), std::string::npos) << job->program;
-    const std::size_t cut_end = job->program.find("Z-33.6300");
+    EXPECT_NE(job->program.find("Z-14.639 F5000.0"), std::string::npos) << job->program;
+    const std::size_t cut_end = job->program.find("Z-33.63 ");
     const std::size_t off = job->program.find("M128");
-    const std::size_t overrun_end = job->program.find("Z-34.5210");
+    const std::size_t overrun_end = job->program.find("Z-34.521 ");
     ASSERT_NE(overrun_end, std::string::npos) << job->program;
     EXPECT_LT(cut_end, off);
     EXPECT_LT(off, overrun_end);

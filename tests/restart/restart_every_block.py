@@ -33,10 +33,9 @@ sys.path.insert(0, str(REPO / "tests" / "macro_programs"))
 sys.path.insert(0, str(REPO / "tests" / "programs"))
 from expand_roundtrip import differ  # noqa: E402  (1e-9 comparison of two move records)
 
-# (program, machine file or None, library folder or None), relative to the repository. The lathe
-# examples are not here yet: on a lathe in G-code system A the expanded header's G94 is a cycle,
-# not feed per minute, so the restart program does not read back (docs/restart.md, limits).
+# (program, machine file or None, library folder or None), relative to the repository.
 PROGRAMS = [
+    ("examples/02_lathe_shaft.ngc", "examples/machines/lathe.toml", None),
     ("examples/01_mill_pocket.ngc", "examples/machines/mill.toml", None),
     ("examples/notch/conrod.nc", "examples/machines/notcher.toml", None),
     ("examples/restart/bolt_circle_loop.nc", "examples/machines/mill.toml", None),
@@ -46,6 +45,11 @@ PROGRAMS = [
     ("tests/macro_programs/17_local_offsets_g52_g92.nc", None, None),
     ("tests/macro_programs/20_pattern_g51_g68.nc", None, None),
 ]
+# Programs whose restart programs rs274 cannot read for a reason outside the restart itself.
+RS274_SKIP = {
+    "examples/notch/conrod.nc": "the notcher's M24-M28 are its own I/O codes, unknown to rs274 (user M-codes are M100-M199)",
+    "examples/02_lathe_shaft.ngc": "a Fanuc system A lathe program: rs274 reads LinuxCNC's lathe codes (G7/G8, G94 feed)",
+}
 BLOCKS_RUN_RE = re.compile(r"\((\d+) blocks run\)")
 
 
@@ -102,7 +106,7 @@ def check_program(args, name: str, machine: str | None, library: str | None, wor
             diff = differ(o, r)
             if diff:
                 raise Failure(f"block {block}, record {report['first_record'] + i}: {diff}")
-        if args.rs274 and block in targets[:: max(1, len(targets) // 3)][:3]:
+        if args.rs274 and name not in RS274_SKIP and block in targets[:: max(1, len(targets) // 3)][:3]:
             check_rs274(args, restart, work)
         checked += 1
     if checked == 0:

@@ -9,6 +9,10 @@
 
 namespace nckit {
 
+//! The G-code that selects `mode` on `machine`: G94/G95, or G98/G99 in lathe G-code system A,
+//! where G94 is the facing cycle.
+[[nodiscard]] const char* feed_mode_code(FeedMode mode, const MachineConfig& machine);
+
 class GcodeWriter {
 public:
     explicit GcodeWriter(const MachineConfig& machine) : machine_(machine) {}
