@@ -52,39 +52,6 @@ Move shifted(const Move& move, const AxisVector& shift) {
     return out;
 }
 
-std::optional<double> level_crossing(const Move& element, ContourAxes axes, double level) {
-    if (const auto* line = std::get_if<Line>(&element.what)) {
-        const double d0 = line->from[axes.depth];
-        const double d1 = line->to[axes.depth];
-        if ((level - d0) * (level - d1) > 0) return std::nullopt;
-        if (d0 == d1) return line->from[axes.length];  // runs along the level: reached at its start
-        const double t = (level - d0) / (d1 - d0);
-        return line->from[axes.length] + t * (line->to[axes.length] - line->from[axes.length]);
-    }
-    const auto* arc = std::get_if<Arc>(&element.what);
-    if (arc == nullptr) return std::nullopt;
-    const double radius = arc_start_radius(*arc);
-    const double offset = level - arc->center[axes.depth];
-    if (std::abs(offset) > radius) return std::nullopt;
-    const double half = std::sqrt(std::max(0.0, radius * radius - offset * offset));
-    const double sweep = arc_sweep_rad(*arc);
-    std::optional<double> best;
-    double best_delta = 0;
-    for (double sign : {-1.0, 1.0}) {
-        AxisVector point = arc->center;
-        point[axes.depth] = level;
-        point[axes.length] = arc->center[axes.length] + sign * half;
-        double delta = angle_from_start(*arc, angle_in_plane(*arc, point));
-        if (delta > two_pi - on_arc_rad) delta = 0;
-        if (delta > sweep + on_arc_rad) continue;
-        if (!best || delta < best_delta) {
-            best = point[axes.length];
-            best_delta = delta;
-        }
-    }
-    return best;
-}
-
 std::vector<double> level_crossings(const Move& element, ContourAxes axes, double level) {
     std::vector<double> found;
     if (const auto* line = std::get_if<Line>(&element.what)) {
@@ -115,6 +82,13 @@ std::vector<double> level_crossings(const Move& element, ContourAxes axes, doubl
     std::sort(on_arc.begin(), on_arc.end());
     for (const auto& [delta, length] : on_arc) found.push_back(length);
     return found;
+}
+
+std::optional<double> level_crossing(const Move& element, ContourAxes axes, double level) {
+    // The first crossing in the element's direction (a line along the level: its start).
+    const std::vector<double> found = level_crossings(element, axes, level);
+    if (found.empty()) return std::nullopt;
+    return found.front();
 }
 
 std::optional<double> depth_at(const std::vector<Move>& shape, ContourAxes axes, double length) {
