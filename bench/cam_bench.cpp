@@ -12,7 +12,7 @@
 
 #include "nckit/cam/cam_table.hpp"
 #include "nckit/cam/encoder_cam.hpp"
-#include "nckit/cam/piston_job.hpp"
+#include "nckit/process/piston/piston_job.hpp"
 
 namespace {
 

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "nckit/process/fast_tool_servo.hpp"
+#include "nckit/process/fts/fast_tool_servo.hpp"
 
 namespace {
 
@@ -45,8 +45,8 @@ void BM_PistonJob(benchmark::State& state) {
     state.counters["turns_to_1um"] = nckit::settled_turn(last.learning.turn_pv_um, 1.0);
     state.counters["turns_to_0.1um"] = nckit::settled_turn(last.learning.turn_pv_um, 0.1);
     state.counters["contraction"] = last.learning_contraction.any_frequency;
-    state.counters["ticks_per_s"] = benchmark::Counter(3.0 * static_cast<double>(last.ticks),
-                                                       benchmark::Counter::kIsIterationInvariantRate);
+    state.counters["ticks_per_s"] =
+        benchmark::Counter(3.0 * static_cast<double>(last.ticks), benchmark::Counter::kIsIterationInvariantRate);
 }
 BENCHMARK(BM_PistonJob)
     ->Args({10, 2, 0})

@@ -48,9 +48,15 @@ void plan_all(benchmark::State& state, nckit::ProfileKind kind, bool feasible_on
     state.SetItemsProcessed(state.iterations());
 }
 
-void BM_PlanProfileSCurve(benchmark::State& state) { plan_all(state, nckit::ProfileKind::scurve, false); }
-void BM_PlanProfileTrapezoid(benchmark::State& state) { plan_all(state, nckit::ProfileKind::trapezoid, false); }
-void BM_PlanProfileSCurveFeasible(benchmark::State& state) { plan_all(state, nckit::ProfileKind::scurve, true); }
+void BM_PlanProfileSCurve(benchmark::State& state) {
+    plan_all(state, nckit::ProfileKind::scurve, false);
+}
+void BM_PlanProfileTrapezoid(benchmark::State& state) {
+    plan_all(state, nckit::ProfileKind::trapezoid, false);
+}
+void BM_PlanProfileSCurveFeasible(benchmark::State& state) {
+    plan_all(state, nckit::ProfileKind::scurve, true);
+}
 void BM_PlanProfileTrapezoidFeasible(benchmark::State& state) {
     plan_all(state, nckit::ProfileKind::trapezoid, true);
 }
@@ -64,7 +70,8 @@ void BM_ProfileAt(benchmark::State& state) {
     const std::vector<Request> input = requests(nckit::ProfileKind::scurve, true);
     std::vector<nckit::Profile> profiles;
     for (const Request& r : input) {
-        profiles.push_back(nckit::plan_profile(r.distance_mm, r.v_start, r.v_end, r.limits, nckit::ProfileKind::scurve));
+        profiles.push_back(
+            nckit::plan_profile(r.distance_mm, r.v_start, r.v_end, r.limits, nckit::ProfileKind::scurve));
     }
     std::mt19937_64 random(11);
     std::uniform_real_distribution<double> unit(0.0, 1.0);

@@ -2,9 +2,9 @@
 // kind; the rest is the file. Each parses into a job or diagnostics; a parsed crosshatch and
 // eccentric job is also run (bounded by the readers' own limits).
 #include "fuzz_support.hpp"
-#include "nckit/cam/piston_job.hpp"
-#include "nckit/process/crosshatch.hpp"
-#include "nckit/process/eccentric.hpp"
+#include "nckit/process/piston/piston_job.hpp"
+#include "nckit/process/crosshatch/crosshatch.hpp"
+#include "nckit/process/eccentric/eccentric.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const unsigned char* data, std::size_t size) {
     using namespace nckit;
@@ -19,7 +19,9 @@ extern "C" int LLVMFuzzerTestOneInput(const unsigned char* data, std::size_t siz
         case 1: {
             Result<EccentricJob> job = parse_eccentric_job(text, "fuzz.toml");
             fuzz::require(job.ok() || !job.diagnostics().empty(), "eccentric: refused without a diagnostic");
-            if (job) fuzz::require(job->updates_per_turn == 0 || job->updates_per_turn >= 3, "eccentric: fewer than 3 updates a turn accepted");
+            if (job)
+                fuzz::require(job->updates_per_turn == 0 || job->updates_per_turn >= 3,
+                              "eccentric: fewer than 3 updates a turn accepted");
             break;
         }
         default: {

@@ -7,7 +7,7 @@
 
 #include "fuzz_support.hpp"
 #include "nckit/interp/interpreter.hpp"
-#include "nckit/process/notch.hpp"
+#include "nckit/process/notch/notch.hpp"
 
 namespace {
 nckit::MachineConfig notcher() {

@@ -34,13 +34,23 @@ std::string program_from(Bytes& in) {
         const double z = in.coordinate() / 4;
         const double feed = 1 + in.next() * 40.0;  // mm/min
         switch (in.next() % 6) {
-            case 0: text += fmt::format("G0 X{:.3f} Y{:.3f} Z{:.3f}\n", x, y, z); break;
+            case 0:
+                text += fmt::format("G0 X{:.3f} Y{:.3f} Z{:.3f}\n", x, y, z);
+                break;
             case 1:
-            case 2: text += fmt::format("G1 X{:.3f} Y{:.3f} Z{:.3f} F{:.1f}\n", x, y, z, feed); break;
-            case 3: text += fmt::format("G{} X{:.3f} Y{:.3f} R{:.3f} F{:.1f}\n", in.next() & 1 ? 2 : 3, x, y,
-                                        10 + in.next() * 0.5, feed); break;
-            case 4: text += fmt::format("G4 P{}\n", in.next()); break;
-            default: text += fmt::format("G9 G1 X{:.3f} F{:.1f}\n", x, feed); break;
+            case 2:
+                text += fmt::format("G1 X{:.3f} Y{:.3f} Z{:.3f} F{:.1f}\n", x, y, z, feed);
+                break;
+            case 3:
+                text += fmt::format("G{} X{:.3f} Y{:.3f} R{:.3f} F{:.1f}\n", in.next() & 1 ? 2 : 3, x, y,
+                                    10 + in.next() * 0.5, feed);
+                break;
+            case 4:
+                text += fmt::format("G4 P{}\n", in.next());
+                break;
+            default:
+                text += fmt::format("G9 G1 X{:.3f} F{:.1f}\n", x, feed);
+                break;
         }
     }
     return text + "M30\n";

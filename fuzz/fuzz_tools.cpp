@@ -11,8 +11,8 @@ extern "C" int LLVMFuzzerTestOneInput(const unsigned char* data, std::size_t siz
     if (size < 1 || size > 64 * 1024) return 0;
     const unsigned kind = data[0];
     const std::string_view text = fuzz::text_of(data + 1, size - 1);
-    Result<ToolTable> table = (kind & 1) == 0 ? parse_tool_toml(text, "fuzz.toml")
-                                              : parse_tool_tbl(text, "fuzz.tbl", (kind & 2) != 0);
+    Result<ToolTable> table =
+        (kind & 1) == 0 ? parse_tool_toml(text, "fuzz.toml") : parse_tool_tbl(text, "fuzz.tbl", (kind & 2) != 0);
     if (!table) {
         fuzz::require(!table.diagnostics().empty(), "a refused tool table without a diagnostic");
         for (const Diagnostic& d : table.diagnostics()) {
@@ -25,8 +25,8 @@ extern "C" int LLVMFuzzerTestOneInput(const unsigned char* data, std::size_t siz
         fuzz::require(number >= 0 && number <= max_tool_number, "a tool number out of range");
         fuzz::require(tool.pocket >= 0, "a negative pocket");
         fuzz::require(tool.orientation >= 0 && tool.orientation <= 9, "a tip orientation out of 0..9");
-        for (double value : {tool.length_mm, tool.length_wear_mm, tool.radius_mm, tool.radius_wear_mm,
-                             tool.x_offset_mm, tool.front_angle_deg, tool.back_angle_deg}) {
+        for (double value : {tool.length_mm, tool.length_wear_mm, tool.radius_mm, tool.radius_wear_mm, tool.x_offset_mm,
+                             tool.front_angle_deg, tool.back_angle_deg}) {
             fuzz::require(std::isfinite(value), "a tool value that is not finite");
         }
         fuzz::require(tool.radius_mm >= 0, "a negative tool radius");

@@ -15,8 +15,8 @@
 #include <string>
 
 #include "nckit/cam/cam_table_file.hpp"
-#include "nckit/process/cam_follower.hpp"
-#include "nckit/process/stroke_reference.hpp"
+#include "nckit/process/fts/cam_follower.hpp"
+#include "nckit/process/fts/stroke_reference.hpp"
 
 extern "C" {
 #include "hal.h"
@@ -88,7 +88,9 @@ Instance instances[max_instances];
 //! rtapi_get_time may be a system call of hundreds. Measured at load; 0 falls back to get_time.
 double ns_per_clock = 0.0;
 
-long long now_ticks() { return ns_per_clock > 0.0 ? rtapi_get_clocks() : rtapi_get_time(); }
+long long now_ticks() {
+    return ns_per_clock > 0.0 ? rtapi_get_clocks() : rtapi_get_time();
+}
 
 //! Times 2 ms of rtapi_get_time against rtapi_get_clocks.
 void calibrate_clock() {
@@ -147,7 +149,7 @@ void update(void* arg, long period) {
     *p.learning_active = out.learning_active;
     const long long spent = now_ticks() - started;
     *p.call_ns = static_cast<rtapi_s32>(ns_per_clock > 0.0 ? static_cast<double>(spent) * ns_per_clock
-                                                          : static_cast<double>(spent));
+                                                           : static_cast<double>(spent));
 }
 
 // Module parameters (loadrt nckit_cam tables=... counts=...).
@@ -166,9 +168,9 @@ MODULE_LICENSE("GPL");
 
 namespace {
 
-#define NCKIT_PIN(kind, dir, field, name)                                                        \
+#define NCKIT_PIN(kind, dir, field, name) \
     if (hal_pin_##kind##_newf(dir, &p->field, comp_id, "nckit-cam.%d." name, n) != 0) return -1;
-#define NCKIT_PARAM(kind, field, name)                                                          \
+#define NCKIT_PARAM(kind, field, name) \
     if (hal_param_##kind##_newf(HAL_RW, &p->field, comp_id, "nckit-cam.%d." name, n) != 0) return -1;
 
 int export_instance(int n, Instance& inst) {
@@ -239,15 +241,15 @@ bool load_table(int n, Instance& inst, const char* path) {
     inst.file = std::make_unique<nckit::cam::CamTableFile>(std::move(file).value());
     inst.table = std::make_unique<nckit::cam::CamTable>(nckit::cam::build_cam_table(*inst.file));
     if (!inst.table->meets_tolerance()) {
-        rtapi_print_msg(RTAPI_MSG_WARN, "nckit_cam: %s: the cam table reaches %g mm, not its tolerance %g mm\n",
-                        path, inst.table->error_bound_mm(), inst.table->tolerance_mm());
+        rtapi_print_msg(RTAPI_MSG_WARN, "nckit_cam: %s: the cam table reaches %g mm, not its tolerance %g mm\n", path,
+                        inst.table->error_bound_mm(), inst.table->tolerance_mm());
     }
     if (inst.table->z_to_mm() > inst.table->z_from_mm()) {
-        inst.reference = std::make_unique<nckit::StrokeReference>(
-            *inst.table, nckit::stroke_reference_points(*inst.table));
+        inst.reference =
+            std::make_unique<nckit::StrokeReference>(*inst.table, nckit::stroke_reference_points(*inst.table));
     }
-    inst.follower = std::make_unique<nckit::CamFollower>(*inst.table, inst.reference.get(), counts[n],
-                                                         assumed_period_s);
+    inst.follower =
+        std::make_unique<nckit::CamFollower>(*inst.table, inst.reference.get(), counts[n], assumed_period_s);
     rtapi_print_msg(RTAPI_MSG_INFO, "nckit_cam: nckit-cam.%d: %s, %zu x %zu cells, error bound %g mm\n", n, path,
                     inst.table->theta_cells(), inst.table->z_cells(), inst.table->error_bound_mm());
     return true;

@@ -90,8 +90,7 @@ extern "C" int rtapi_app_main(void) {
         instances[n].pins = p;
         char name[HAL_NAME_LEN + 1];
         rtapi_snprintf(name, sizeof(name), "nckit-servo.%d", n);
-        if (p == nullptr ||
-            hal_pin_float_newf(HAL_IN, &p->command, comp_id, "%s.command", name) != 0 ||
+        if (p == nullptr || hal_pin_float_newf(HAL_IN, &p->command, comp_id, "%s.command", name) != 0 ||
             hal_pin_float_newf(HAL_OUT, &p->position, comp_id, "%s.position", name) != 0 ||
             hal_pin_float_newf(HAL_OUT, &p->velocity, comp_id, "%s.velocity", name) != 0 ||
             hal_param_float_newf(HAL_RW, &p->gain, comp_id, "%s.gain", name) != 0 ||

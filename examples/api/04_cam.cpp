@@ -27,11 +27,13 @@ int main() {
     options.z_to_mm = 20;
     options.tolerance_mm = 1e-6;  // 1 nm
     const nckit::cam::CamTable table = nckit::cam::CamTable::build(
-        [&](double theta_deg, double z_mm) { return drawing.evaluate(std::array{theta_deg, z_mm}); }, options);
+        [&](double theta_deg, double z_mm) {
+            return drawing.evaluate(std::array{theta_deg, z_mm});
+        },
+        options);
 
     std::printf("cells: %zu x %zu, %zu bytes, error bound %.3g mm, tolerance met: %s\n", table.theta_cells(),
-                table.z_cells(), table.memory_bytes(), table.error_bound_mm(),
-                table.meets_tolerance() ? "yes" : "no");
+                table.z_cells(), table.memory_bytes(), table.error_bound_mm(), table.meets_tolerance() ? "yes" : "no");
     // Any angle works (it wraps around the turn); Z outside the table holds its end row.
     std::printf("theta_deg,z_mm,r_mm\n");
     for (double theta : {0.0, 30.0, 45.0, 90.0, 135.0, 400.0, -30.0}) {

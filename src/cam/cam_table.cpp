@@ -41,13 +41,16 @@ struct Corner {
     double f = 0, ft = 0, fs = 0, fts = 0;
 };
 
-Corner bottom_corner(const NodeData& n) { return {n.f, n.ft, n.fs_above, n.fts_above}; }
-Corner top_corner(const NodeData& n) { return {n.f, n.ft, n.fs_below, n.fts_below}; }
+Corner bottom_corner(const NodeData& n) {
+    return {n.f, n.ft, n.fs_above, n.fts_above};
+}
+Corner top_corner(const NodeData& n) {
+    return {n.f, n.ft, n.fs_below, n.fts_below};
+}
 
 //! The bicubic whose corner values and cell-unit derivatives are the nodes' (Hermite data):
 //! C = M G Mᵀ, M the cubic Hermite matrix, G the 4 × 4 corner data.
-void patch(const Corner& n00, const Corner& n10, const Corner& n01, const Corner& n11,
-           double* out) {
+void patch(const Corner& n00, const Corner& n10, const Corner& n01, const Corner& n11, double* out) {
     // Rows: θ data (value at t=0, at t=1, slope at t=0, at t=1); columns the same for s.
     const double g[4][4] = {{n00.f, n01.f, n00.fs, n01.fs},
                             {n10.f, n11.f, n10.fs, n11.fs},
@@ -72,8 +75,7 @@ void patch(const Corner& n00, const Corner& n10, const Corner& n01, const Corner
 }  // namespace
 
 CamTable CamTable::build(const CamFunction& f, const CamTableOptions& options) {
-    if (!std::isfinite(options.z_from_mm) || !std::isfinite(options.z_to_mm) ||
-        options.z_to_mm < options.z_from_mm) {
+    if (!std::isfinite(options.z_from_mm) || !std::isfinite(options.z_to_mm) || options.z_to_mm < options.z_from_mm) {
         throw std::invalid_argument("CamTable needs a finite z range with z_to >= z_from");
     }
     if (!(options.tolerance_mm > 0)) throw std::invalid_argument("CamTable tolerance must be > 0");
@@ -90,14 +92,12 @@ CamTable CamTable::build(const CamFunction& f, const CamTableOptions& options) {
         table.theta_mask_ = theta_cells - 1;
         table.z_cells_ = z_cells;
         table.theta_cells_per_deg_ = static_cast<double>(theta_cells) / 360.0;
-        table.z_cells_per_mm_ =
-            flat_z ? 0.0 : static_cast<double>(z_cells) / (options.z_to_mm - options.z_from_mm);
+        table.z_cells_per_mm_ = flat_z ? 0.0 : static_cast<double>(z_cells) / (options.z_to_mm - options.z_from_mm);
         table.z_top_ = static_cast<double>(z_cells);
         table.z_last_ = static_cast<std::int64_t>(z_cells) - 1;
         table.tabulate(f);
         const Check seen = table.check(f);
-        table.checked_error_mm_ =
-            std::max({seen.along_theta_mm, seen.along_z_mm, seen.interior_mm});
+        table.checked_error_mm_ = std::max({seen.along_theta_mm, seen.along_z_mm, seen.interior_mm});
         table.error_bound_mm_ = bound_factor * table.checked_error_mm_ + rounding_mm;
         if (table.meets_tolerance()) break;
         // A direction whose edges are already well inside the tolerance keeps its cells; if
@@ -133,21 +133,17 @@ void CamTable::tabulate(const CamFunction& f) {
     // d/ds by (−3 f(0) + 4 f(±δ) − f(±2δ)) / (±2δ); `sign` +1 looks up, −1 down.
     auto z_slope = [&](double theta, double z, double sign) {
         const double dz = sign * slope_step * h_z;
-        return sign * (-3.0 * f(theta, z) + 4.0 * f(theta, z + dz) - f(theta, z + 2 * dz)) /
-               (2 * slope_step);
+        return sign * (-3.0 * f(theta, z) + 4.0 * f(theta, z + dz) - f(theta, z + 2 * dz)) / (2 * slope_step);
     };
     auto twist = [&](double theta, double z, double sign) {
         const double tz = sign * twist_step * h_z;
-        auto at = [&](double th) {
-            return -3.0 * f(th, z) + 4.0 * f(th, z + tz) - f(th, z + 2 * tz);
-        };
+        auto at = [&](double th) { return -3.0 * f(th, z) + 4.0 * f(th, z + tz) - f(th, z + 2 * tz); };
         return sign * (at(theta + tt) - at(theta - tt)) / (4 * twist_step * twist_step);
     };
     std::vector<NodeData> nodes(columns * rows);
     for (std::size_t j = 0; j < rows; ++j) {
         // The last row sits exactly on z_to (not z_from + n h, which may round past it).
-        const double z =
-            j + 1 == rows && !flat_z ? z_to_mm_ : z_from_mm_ + static_cast<double>(j) * h_z;
+        const double z = j + 1 == rows && !flat_z ? z_to_mm_ : z_from_mm_ + static_cast<double>(j) * h_z;
         for (std::size_t i = 0; i < columns; ++i) {
             const double theta = static_cast<double>(i) * h_theta;
             NodeData& n = nodes[j * columns + i];

@@ -135,9 +135,11 @@ Result<CamTableFile> read_cam_table_csv(const std::string& path) {
     } else if (line == "theta_deg,x_diameter_mm") {
         kind = CamFileKind::diameter_by_theta;
     } else {
-        reader.fail(1, 1, fmt::format("unknown cam table header '{}': expected 'z_mm,phi_deg,radius_mm' "
-                                      "(nckit piston --cam-table) or 'theta_deg,x_diameter_mm' "
-                                      "(nckit eccentric --cam-table)", line.substr(0, 80)));
+        reader.fail(1, 1,
+                    fmt::format("unknown cam table header '{}': expected 'z_mm,phi_deg,radius_mm' "
+                                "(nckit piston --cam-table) or 'theta_deg,x_diameter_mm' "
+                                "(nckit eccentric --cam-table)",
+                                line.substr(0, 80)));
         return reader.problems;
     }
     const std::size_t columns = kind == CamFileKind::radius_by_z ? 3 : 2;
@@ -172,7 +174,8 @@ Result<CamTableFile> read_cam_table_csv(const std::string& path) {
                 return reader.problems;
             }
             if (!stations.empty() && !(z > stations.back())) {
-                reader.fail(number, 1, fmt::format("station z {} mm does not follow {} mm upwards", z, stations.back()));
+                reader.fail(number, 1,
+                            fmt::format("station z {} mm does not follow {} mm upwards", z, stations.back()));
                 return reader.problems;
             }
             if (stations.size() == max_cam_file_stations) {
@@ -183,8 +186,9 @@ Result<CamTableFile> read_cam_table_csv(const std::string& path) {
             values.emplace_back();
             values.back().reserve(cam_file_degrees);
         } else if (z != stations.back()) {
-            reader.fail(number, 1, fmt::format("z {} mm changes within the station at {} mm (row {} of its 360)", z,
-                                               stations.back(), values.back().size() + 1));
+            reader.fail(number, 1,
+                        fmt::format("z {} mm changes within the station at {} mm (row {} of its 360)", z,
+                                    stations.back(), values.back().size() + 1));
             return reader.problems;
         }
         const auto expected = static_cast<double>(values.back().size());
@@ -201,8 +205,9 @@ Result<CamTableFile> read_cam_table_csv(const std::string& path) {
         return reader.problems;
     }
     if (values.back().size() != cam_file_degrees) {
-        reader.fail(number, 0, fmt::format("the last station (z {} mm) ends after {} of its 360 rows",
-                                           stations.back(), values.back().size()));
+        reader.fail(number, 0,
+                    fmt::format("the last station (z {} mm) ends after {} of its 360 rows", stations.back(),
+                                values.back().size()));
         return reader.problems;
     }
     return CamTableFile(kind, std::move(stations), std::move(values));

@@ -13,8 +13,7 @@ DrawingFunction::DrawingFunction(Formula formula) : kind_(std::move(formula)) {
     }
 }
 
-DrawingFunction::DrawingFunction(std::vector<FormulaSegment> segments)
-    : kind_(std::move(segments)) {
+DrawingFunction::DrawingFunction(std::vector<FormulaSegment> segments) : kind_(std::move(segments)) {
     const auto& list = std::get<std::vector<FormulaSegment>>(kind_);
     if (list.empty()) throw std::invalid_argument("a segmented drawing function needs a segment");
     for (const FormulaSegment& segment : list) {

@@ -15,8 +15,12 @@ namespace {
 
 constexpr std::size_t max_variables = 4;
 
-double sin_deg(double x) { return std::sin(x * (std::numbers::pi / 180.0)); }
-double cos_deg(double x) { return std::cos(x * (std::numbers::pi / 180.0)); }
+double sin_deg(double x) {
+    return std::sin(x * (std::numbers::pi / 180.0));
+}
+double cos_deg(double x) {
+    return std::cos(x * (std::numbers::pi / 180.0));
+}
 
 //! muparser says `Unexpected token "Q" found at position 6.`; the diagnostic gives the
 //! position as a column of its own, so the message keeps only the what.
@@ -52,12 +56,10 @@ struct Formula::Engine {
     }
 };
 
-Formula::Formula(std::string text, std::vector<std::string> variables,
-                 std::unique_ptr<Engine> engine)
+Formula::Formula(std::string text, std::vector<std::string> variables, std::unique_ptr<Engine> engine)
     : text_(std::move(text)), variables_(std::move(variables)), engine_(std::move(engine)) {}
 
-std::variant<Formula, FormulaError> Formula::compile(std::string text,
-                                                     std::vector<std::string> variables) {
+std::variant<Formula, FormulaError> Formula::compile(std::string text, std::vector<std::string> variables) {
     if (variables.size() > max_variables) {
         throw std::invalid_argument("a Formula takes at most 4 variables");
     }
@@ -67,8 +69,7 @@ std::variant<Formula, FormulaError> Formula::compile(std::string text,
     } catch (const mu::Parser::exception_type& error) {
         const int position = error.GetPos();
         // muparser reports -1 for an empty formula and one past the end for a missing ')'.
-        const std::size_t at =
-            position < 0 ? 0 : std::min(static_cast<std::size_t>(position), text.size());
+        const std::size_t at = position < 0 ? 0 : std::min(static_cast<std::size_t>(position), text.size());
         return FormulaError{at, tidy_message(error.GetMsg())};
     }
     if (engine->parser.GetNumResults() != 1) {

@@ -59,8 +59,7 @@ double NaturalSpline::value(double x) const {
     const double h = x_[k + 1] - x_[k];
     const double a = (x_[k + 1] - x) / h;
     const double b = (x - x_[k]) / h;
-    return a * y_[k] + b * y_[k + 1] +
-           ((a * a * a - a) * m_[k] + (b * b * b - b) * m_[k + 1]) * (h * h) / 6.0;
+    return a * y_[k] + b * y_[k + 1] + ((a * a * a - a) * m_[k] + (b * b * b - b) * m_[k + 1]) * (h * h) / 6.0;
 }
 
 double NaturalSpline::slope(double x) const {
@@ -70,8 +69,7 @@ double NaturalSpline::slope(double x) const {
     const double h = x_[k + 1] - x_[k];
     const double a = (x_[k + 1] - inside) / h;
     const double b = (inside - x_[k]) / h;
-    return (y_[k + 1] - y_[k]) / h +
-           ((1.0 - 3.0 * a * a) * m_[k] + (3.0 * b * b - 1.0) * m_[k + 1]) * h / 6.0;
+    return (y_[k + 1] - y_[k]) / h + ((1.0 - 3.0 * a * a) * m_[k] + (3.0 * b * b - 1.0) * m_[k + 1]) * h / 6.0;
 }
 
 double NaturalSpline::curvature(double x) const {

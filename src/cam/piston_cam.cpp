@@ -37,8 +37,7 @@ CamTableOptions piston_cam_options(std::span<const double> breaks_mm, double tol
         for (std::size_t i = 1; i < breaks_mm.size(); ++i) {
             shortest = std::min(shortest, breaks_mm[i] - breaks_mm[i - 1]);
         }
-        cells = static_cast<std::size_t>(
-            std::ceil((options.z_to_mm - options.z_from_mm) / shortest));
+        cells = static_cast<std::size_t>(std::ceil((options.z_to_mm - options.z_from_mm) / shortest));
     }
     options.min_z_cells = std::max<std::size_t>(cells, 1);
     return options;

@@ -12,7 +12,9 @@ namespace nckit::cam {
 namespace {
 constexpr double two_pi = 2.0 * std::numbers::pi;
 
-double omega_rad_s(double rpm) { return two_pi * rpm / 60.0; }
+double omega_rad_s(double rpm) {
+    return two_pi * rpm / 60.0;
+}
 }  // namespace
 
 double ProfileDemand::acceleration_mm_s2(double rpm) const {
@@ -39,8 +41,7 @@ std::vector<double> demand_z_grid(std::span<const double> z_mm, int z_subdivisio
     return grid;
 }
 
-ProfileDemand measure_demand(const CamFunction& radius_mm, std::span<const double> z_mm,
-                             DemandGrid grid) {
+ProfileDemand measure_demand(const CamFunction& radius_mm, std::span<const double> z_mm, DemandGrid grid) {
     if (!(grid.theta_step_deg > 0) || grid.theta_step_deg > 90.0) {
         throw std::invalid_argument("measure_demand needs 0 < theta_step_deg <= 90");
     }
@@ -65,8 +66,7 @@ ProfileDemand measure_demand(const CamFunction& radius_mm, std::span<const doubl
         for (std::size_t i = 0; i < points; ++i) {
             const double before = turn[(i + points - 1) % points];
             const double after = turn[(i + 1) % points];
-            const double curvature =
-                std::abs(before - 2.0 * turn[i] + after) / (step_rad * step_rad);
+            const double curvature = std::abs(before - 2.0 * turn[i] + after) / (step_rad * step_rad);
             if (curvature > demand.curvature_mm_rad2) {
                 demand.curvature_mm_rad2 = curvature;
                 demand.curvature_theta_deg = static_cast<double>(i) * step_deg;

@@ -13,10 +13,14 @@ constexpr double rad_per_deg = std::numbers::pi / 180.0;
 
 std::string_view name(ShapeKind kind) {
     switch (kind) {
-        case ShapeKind::ellipse2: return "ellipse2";
-        case ShapeKind::ellipse4: return "ellipse4";
-        case ShapeKind::ellipse: return "ellipse";
-        case ShapeKind::formula: return "formula";
+        case ShapeKind::ellipse2:
+            return "ellipse2";
+        case ShapeKind::ellipse4:
+            return "ellipse4";
+        case ShapeKind::ellipse:
+            return "ellipse";
+        case ShapeKind::formula:
+            return "formula";
     }
     return "formula";
 }
@@ -28,9 +32,13 @@ std::optional<ShapeKind> parse_shape_name(std::string_view text) {
     return std::nullopt;
 }
 
-std::vector<std::string> shape_formula_variables() { return {"Z", "PHI", "D", "E"}; }
+std::vector<std::string> shape_formula_variables() {
+    return {"Z", "PHI", "D", "E"};
+}
 
-SectionShape SectionShape::ellipse2() { return SectionShape(ShapeKind::ellipse2); }
+SectionShape SectionShape::ellipse2() {
+    return SectionShape(ShapeKind::ellipse2);
+}
 
 SectionShape SectionShape::ellipse4(DrawingFunction e4_mm) {
     SectionShape shape(ShapeKind::ellipse4);
@@ -38,7 +46,9 @@ SectionShape SectionShape::ellipse4(DrawingFunction e4_mm) {
     return shape;
 }
 
-SectionShape SectionShape::ellipse() { return SectionShape(ShapeKind::ellipse); }
+SectionShape SectionShape::ellipse() {
+    return SectionShape(ShapeKind::ellipse);
+}
 
 SectionShape SectionShape::formula(Formula drop_mm) {
     if (drop_mm.variables() != shape_formula_variables()) {
@@ -52,10 +62,10 @@ SectionShape SectionShape::formula(Formula drop_mm) {
 double SectionShape::drop_mm(double phi_deg, double z_mm, double d_mm, double e_mm) const {
     const double phi = phi_deg * rad_per_deg;
     switch (kind_) {
-        case ShapeKind::ellipse2: return 0.25 * e_mm * (1.0 - std::cos(2.0 * phi));
+        case ShapeKind::ellipse2:
+            return 0.25 * e_mm * (1.0 - std::cos(2.0 * phi));
         case ShapeKind::ellipse4:
-            return 0.25 * e_mm * (1.0 - std::cos(2.0 * phi)) +
-                   0.25 * e4_mm_->value(z_mm) * (1.0 - std::cos(4.0 * phi));
+            return 0.25 * e_mm * (1.0 - std::cos(2.0 * phi)) + 0.25 * e4_mm_->value(z_mm) * (1.0 - std::cos(4.0 * phi));
         case ShapeKind::ellipse: {
             // Polar radius of the ellipse at polar angle φ: a b / sqrt((b cos φ)² + (a sin φ)²).
             const double a = 0.5 * d_mm;

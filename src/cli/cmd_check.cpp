@@ -45,7 +45,8 @@ int run_check(CheckOptions& options) {
 
 void add_check_verb(CLI::App& app, int& exit_status) {
     auto options = std::make_shared<CheckOptions>();
-    CLI::App* verb = app.add_subcommand("check", "Check a program: print every error (up to --max-errors), exit 0 when clean");
+    CLI::App* verb =
+        app.add_subcommand("check", "Check a program: print every error (up to --max-errors), exit 0 when clean");
     verb->add_option("FILE", options->program, "NC program ('-': standard input)")->required();
     add_machine_options(*verb, options->machine);
     verb->add_option("--max-errors", options->max_errors, "stop after this many errors (1-10000, default 20)")

@@ -16,8 +16,9 @@
 #include "tool_path_page.hpp"
 #include "partial_file.hpp"
 #include "step_record.hpp"
-#include "nckit/process/crosshatch.hpp"
-#include "nckit/process/crosshatch_scan.hpp"
+#include "nckit/process/crosshatch/crosshatch.hpp"
+#include "nckit/process/crosshatch/crosshatch_scan.hpp"
+#include "nckit/process/crosshatch/crosshatch_json.hpp"
 #include "verbs.hpp"
 
 namespace nckit::cli {
@@ -34,41 +35,18 @@ struct CrosshatchOptions {
     std::string html;
 };
 
-std::string timing_name(CrosshatchTiming timing) {
-    return timing == CrosshatchTiming::one_time_base ? "one_time_base" : "free_running_timers";
-}
-
 void print_json(const CrosshatchPlan& plan, const CrosshatchScan& scan) {
-    const CrosshatchJob& job = plan.job;
-    fmt::print(
-        "{{\"rotation_rpm\":{},\"feed_mm_min\":{},\"timer_divisor\":{{\"rotation\":{},\"feed\":{},\"index\":{}}},"
-        "\"speed_error\":{{\"rotation\":{},\"feed\":{},\"index\":{}}},"
-        "\"step_rate_hz\":{{\"rotation\":{},\"feed\":{}}},\"timer_rate_hz\":{{\"rotation\":{},\"feed\":{}}},"
-        "\"pattern\":\"{}\",\"round_trip_deg\":{},\"index_deg\":{},\"index_move_deg\":{},\"index_move_steps\":{},"
-        "\"crosshatch_angle_deg\":{},\"helix_angle_deg\":{},\"track_angle_deg\":{},\"track_angle_error_deg\":{},"
-        "\"timer_angle_error_bound_deg\":{},\"drift_deg_per_stroke\":{},\"closure_error_steps\":{},"
-        "\"line_spacing_mm\":{},\"surface_speed_mm_min\":{},\"turns_per_stroke\":{},\"stroke_mm\":{},"
-        "\"stroke_time_s\":{},\"steps_per_stroke\":{{\"rotation\":{},\"feed\":{}}},\"rotation_steps_per_turn\":{},"
-        "\"cycles\":{},\"tracks\":{},\"steps\":{{\"rotation\":{},\"feed\":{}}},\"duration_s\":{},\"timing\":\"{}\"}}\n",
-        plan.rotation_rpm, plan.feed_mm_min, plan.rotation.timer.divisor, plan.feed.timer.divisor,
-        plan.index_timer.divisor, plan.rotation.timer.speed_error, plan.feed.timer.speed_error,
-        plan.index_timer.speed_error, plan.rotation.timer.wanted_hz, plan.feed.timer.wanted_hz,
-        plan.rotation.timer.rate_hz, plan.feed.timer.rate_hz, plan.special ? "special" : "arbitrary",
-        plan.round_trip_deg, job.index_deg, plan.index_move_deg, plan.index_move_steps, plan.crosshatch_angle_deg,
-        plan.helix_angle_deg, scan.track_angle_deg, scan.track_angle_error_deg, scan.timer_angle_error_bound_deg,
-        scan.drift_deg_per_stroke, scan.closure_error_steps, plan.line_spacing_mm, plan.surface_speed_mm_min,
-        plan.turns_per_stroke, scan.stroke_mm, plan.stroke_time_s, plan.rotation_steps_per_stroke,
-        plan.feed_steps_per_stroke, plan.rotation_steps_per_turn, job.cycles, scan.tracks.size(),
-        scan.rotation_steps, scan.feed_steps, scan.duration_s, timing_name(job.timing));
+    fmt::print("{}\n", to_json(plan, scan).dump());
 }
 
 void print_text(const CrosshatchPlan& plan, const CrosshatchScan& scan, const std::string& name) {
     const CrosshatchJob& job = plan.job;
     fmt::print("{}: bore D {} mm x H {} mm, {} heads, {} lines per length\n", name, job.bore_diameter_mm,
                job.bore_length_mm, job.heads, job.lines_per_length);
-    fmt::print("  feed      {:.6g} mm/min (screw {:.6g} rpm): {:.6g} steps/s, divisor {} -> {:.6g} steps/s ({:+.4f} %)\n",
-               plan.feed_mm_min, job.feed_screw_rpm, plan.feed.timer.wanted_hz, plan.feed.timer.divisor,
-               plan.feed.timer.rate_hz, plan.feed.timer.speed_error * 100);
+    fmt::print(
+        "  feed      {:.6g} mm/min (screw {:.6g} rpm): {:.6g} steps/s, divisor {} -> {:.6g} steps/s ({:+.4f} %)\n",
+        plan.feed_mm_min, job.feed_screw_rpm, plan.feed.timer.wanted_hz, plan.feed.timer.divisor,
+        plan.feed.timer.rate_hz, plan.feed.timer.speed_error * 100);
     fmt::print("  rotation  {:.6g} rpm: {:.6g} steps/s, divisor {} -> {:.6g} steps/s ({:+.4f} %)\n", plan.rotation_rpm,
                plan.rotation.timer.wanted_hz, plan.rotation.timer.divisor, plan.rotation.timer.rate_hz,
                plan.rotation.timer.speed_error * 100);
@@ -78,11 +56,12 @@ void print_text(const CrosshatchPlan& plan, const CrosshatchScan& scan, const st
                plan.special ? "special angle, no correction move"
                             : fmt::format("arbitrary angle, correction {:+.6g} deg ({} steps) after each cycle",
                                           plan.index_move_deg, plan.index_move_steps));
-    fmt::print("  scan ({}): {} cycles, {:.1f} s; tracks at {:.4f} deg ({:+.4f}), drift {:.4g} deg per stroke, "
-               "closure error {:.3g} steps\n",
-               timing_name(job.timing), job.cycles, scan.duration_s, scan.track_angle_deg,
-               std::abs(scan.track_angle_error_deg) < 5e-9 ? 0.0 : scan.track_angle_error_deg,
-               scan.drift_deg_per_stroke, scan.closure_error_steps);
+    fmt::print(
+        "  scan ({}): {} cycles, {:.1f} s; tracks at {:.4f} deg ({:+.4f}), drift {:.4g} deg per stroke, "
+        "closure error {:.3g} steps\n",
+        timing_name(job.timing), job.cycles, scan.duration_s, scan.track_angle_deg,
+        std::abs(scan.track_angle_error_deg) < 5e-9 ? 0.0 : scan.track_angle_error_deg, scan.drift_deg_per_stroke,
+        scan.closure_error_steps);
 }
 
 //! Writes `text` to `path` through NAME.partial; false (error printed) when it cannot.
@@ -147,7 +126,8 @@ void add_crosshatch_verb(CLI::App& app, int& exit_status) {
     verb->add_option("--svg", options->svg, "draw the unrolled bore with the laser tracks (SVG)");
     verb->add_option("--html", options->html, "write an interactive page: the unrolled net, speeds, divisors (HTML)");
     verb->add_option("-o,--output", options->gcode, "write the scan as G-code (Z and a rotary A axis)");
-    CLI::Option* steps = verb->add_option("--steps", options->steps, "write both motors' step streams (axis 0 feed, 1 rotation)");
+    CLI::Option* steps =
+        verb->add_option("--steps", options->steps, "write both motors' step streams (axis 0 feed, 1 rotation)");
     verb->add_flag("--text", options->text, "--steps as text: t_ns axis dir port")->needs(steps);
     verb->callback([options, &exit_status] { exit_status = run_crosshatch(*options); });
 }

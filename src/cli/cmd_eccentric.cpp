@@ -13,7 +13,8 @@
 #include "nckit/report/process_pages.hpp"
 #include "tool_path_page.hpp"
 #include "partial_file.hpp"
-#include "nckit/process/eccentric.hpp"
+#include "nckit/process/eccentric/eccentric.hpp"
+#include "nckit/process/eccentric/eccentric_json.hpp"
 #include "verbs.hpp"
 
 namespace nckit::cli {
@@ -28,26 +29,8 @@ struct EccentricOptions {
     std::string html;
 };
 
-//! A JSON number, or null for a limit the axis does not have.
-std::string number_or_null(double value) { return std::isfinite(value) ? fmt::format("{}", value) : "null"; }
-
-std::string fit_json(const SectionFit& fit) {
-    return fmt::format(R"({{"roundness_um":{},"center_offset_um":{},"radius_error_um":{},"max_deviation_um":{}}})",
-                       fit.roundness_um, fit.center_offset_um, fit.radius_error_um, fit.max_deviation_um);
-}
-
 void print_json(const EccentricReport& r) {
-    fmt::print(
-        "{{\"roundness_um\":{},\"center_offset_um\":{},\"max_rpm\":{},\"limited_by\":\"{}\",\"rpm\":{},"
-        "\"max_rpm_by\":{{\"velocity\":{},\"acceleration\":{},\"jerk\":{},\"following\":{}}},"
-        "\"compensated\":{},\"uncompensated\":{},\"servo_axis\":{},\"updates_per_turn\":{},"
-        "\"x_diameter_mm\":{{\"min\":{},\"max\":{}}},\"peak_velocity_mm_s\":{},\"peak_acceleration_mm_s2\":{},"
-        "\"peak_jerk_mm_s3\":{},\"turns\":{},\"cycle_time_s\":{}}}\n",
-        r.compensated.roundness_um, r.compensated.center_offset_um, r.max_rpm, r.limited_by, r.job.rpm,
-        number_or_null(r.limits.velocity), number_or_null(r.limits.acceleration), number_or_null(r.limits.jerk),
-        number_or_null(r.limits.following), fit_json(r.compensated), fit_json(r.uncompensated),
-        r.servo_axis ? "true" : "false", r.updates_per_turn, r.x_min_diameter_mm, r.x_max_diameter_mm,
-        r.peak_velocity_mm_s, r.peak_acceleration_mm_s2, r.peak_jerk_mm_s3, r.turns, r.cycle_time_s);
+    fmt::print("{}\n", to_json(r).dump());
 }
 
 void print_text(const EccentricReport& r, const std::string& name) {

@@ -62,8 +62,8 @@ int run_expand(const ExpandOptions& options) {
                    options.decimals < 0 ? std::string("null") : std::to_string(options.decimals),
                    json_number(writer.worst_deviation_mm()));
     } else if (options.decimals >= 0) {
-        fmt::print(stderr, "expand: coordinates rounded to {} decimals, worst deviation {} mm\n",
-                   options.decimals, json_number(writer.worst_deviation_mm()));
+        fmt::print(stderr, "expand: coordinates rounded to {} decimals, worst deviation {} mm\n", options.decimals,
+                   json_number(writer.worst_deviation_mm()));
     }
     return 0;
 }

@@ -23,8 +23,8 @@ struct MovesOptions {
 };
 
 void print_summary(const MoveSummary& s, const MachineConfig& machine) {
-    fmt::print("moves: {} rapid, {} linear, {} arc, {} sync, {} dwell, {} io\n", s.rapids, s.lines,
-               s.arcs, s.syncs, s.dwells, s.ios);
+    fmt::print("moves: {} rapid, {} linear, {} arc, {} sync, {} dwell, {} io\n", s.rapids, s.lines, s.arcs, s.syncs,
+               s.dwells, s.ios);
     fmt::print("cutting length: {:.3f} mm, rapid length: {:.3f} mm\n", s.cutting_length_mm, s.rapid_length_mm);
     fmt::print("time at programmed feed: {:.3f} s, dwell: {:.3f} s\n", s.feed_time_s, s.dwell_s);
     if (!s.any_motion) return;

@@ -13,7 +13,7 @@
 #include "partial_file.hpp"
 #include "nckit/report/process_pages.hpp"
 #include "tool_path_page.hpp"
-#include "nckit/process/notch.hpp"
+#include "nckit/process/notch/notch.hpp"
 #include "verbs.hpp"
 
 namespace nckit::cli {
@@ -29,8 +29,9 @@ struct NotchCliOptions {
 };
 
 std::string speed_json(const CutSpeed& speed) {
-    std::string out = fmt::format("{{\"min_mm_min\":{},\"max_mm_min\":{},\"mean_mm_min\":{},\"covered_mm\":{},\"profile\":[",
-                                  speed.min_mm_min, speed.max_mm_min, speed.mean_mm_min, speed.covered_mm);
+    std::string out =
+        fmt::format("{{\"min_mm_min\":{},\"max_mm_min\":{},\"mean_mm_min\":{},\"covered_mm\":{},\"profile\":[",
+                    speed.min_mm_min, speed.max_mm_min, speed.mean_mm_min, speed.covered_mm);
     for (std::size_t i = 0; i < speed.profile.size(); ++i) {
         out += fmt::format("{}[{},{}]", i == 0 ? "" : ",", speed.profile[i][0], speed.profile[i][1]);
     }
@@ -45,8 +46,8 @@ void print_json(const NotchJob& job) {
             "{}{{\"line\":{},\"sequence_number\":{},\"laser_on_mcode\":{},\"length_mm\":{},\"feed_mm_min\":{},"
             "\"cut_speed_mm_min\":{},\"run_up_mm\":{},\"run_up_placed_mm\":{},\"overrun_mm\":{},"
             "\"approach_shortened\":{},\"profile_coordinate\":\"{}\",\"before\":{},\"after\":{}}}",
-            i == 0 ? "" : ",", cut.where.line, cut.sequence_number, cut.laser_on_mcode, cut.length_mm,
-            cut.feed_mm_min, cut.cut_speed_mm_min, cut.run_up_mm, cut.run_up_placed_mm, cut.overrun_mm,
+            i == 0 ? "" : ",", cut.where.line, cut.sequence_number, cut.laser_on_mcode, cut.length_mm, cut.feed_mm_min,
+            cut.cut_speed_mm_min, cut.run_up_mm, cut.run_up_placed_mm, cut.overrun_mm,
             cut.approach_shortened ? "true" : "false",
             cut.profile_axis ? std::string(1, letter(*cut.profile_axis)) : std::string("s"), speed_json(cut.before),
             speed_json(cut.after));
@@ -60,9 +61,8 @@ void print_text(const NotchJob& job, const std::string& program) {
         fmt::print("line {}{}: M{} then a {:.4f} mm cut at F{}\n", cut.where.line,
                    cut.sequence_number >= 0 ? fmt::format(" (N{})", cut.sequence_number) : std::string(),
                    cut.laser_on_mcode, cut.length_mm, cut.feed_mm_min);
-        fmt::print("  run-up {:.6f} mm (placed {:.4f} mm{}), overrun {:.6f} mm\n", cut.run_up_mm,
-                   cut.run_up_placed_mm, cut.approach_shortened ? ", on the approach" : ", head steps back",
-                   cut.overrun_mm);
+        fmt::print("  run-up {:.6f} mm (placed {:.4f} mm{}), overrun {:.6f} mm\n", cut.run_up_mm, cut.run_up_placed_mm,
+                   cut.approach_shortened ? ", on the approach" : ", head steps back", cut.overrun_mm);
         for (const auto& [name, speed] : {std::pair{"before", &cut.before}, std::pair{"after ", &cut.after}}) {
             fmt::print("  {} speed along the cut: min {:.3f} max {:.3f} mean {:.3f} mm/min over {:.4f} mm\n", name,
                        speed->min_mm_min, speed->max_mm_min, speed->mean_mm_min, speed->covered_mm);
@@ -101,8 +101,9 @@ int run_notch(const NotchCliOptions& options) {
     if (!options.html.empty()) {
         // The page shows the rewritten program's tool path beside the speeds over the cuts.
         page = notch_page(*job, options.program);
-        page->tool_path = plan_tool_path_text(job->program, options.output.empty() ? options.program + " (rewritten)" : options.output,
-                                              interpreter->machine());
+        page->tool_path = plan_tool_path_text(
+            job->program, options.output.empty() ? options.program + " (rewritten)" : options.output,
+            interpreter->machine());
         if (!page->tool_path) return exit_bad_input;
     }
     if (!options.output.empty()) {

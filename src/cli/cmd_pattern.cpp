@@ -11,6 +11,7 @@
 
 #include "common.hpp"
 #include "partial_file.hpp"
+#include "nckit/process/pattern/pattern_json.hpp"
 #include "nckit/process/pattern/pattern_run.hpp"
 #include "nckit/process/pattern/pattern_svg.hpp"
 #include "nckit/report/pattern_page.hpp"
@@ -37,58 +38,27 @@ struct PatternOptions {
 
 struct Sole {
     SoleRun run;
-    std::string name;    //!< file stem: JOB_SIZE[_mirror]
+    std::string name;  //!< file stem: JOB_SIZE[_mirror]
     std::string program_path;
     std::string svg_path;
     std::string title;
 };
 
-std::string size_text(double size) { return fmt::format("{}", size); }
-
-//! A JSON string: quotes, backslashes and control characters escaped.
-std::string quoted(const std::string& text) {
-    std::string out = "\"";
-    for (char c : text) {
-        if (c == '"' || c == '\\') {
-            out += '\\';
-            out += c;
-        } else if (static_cast<unsigned char>(c) < 0x20) {
-            out += fmt::format("\\u{:04x}", static_cast<int>(c));
-        } else {
-            out += c;
-        }
-    }
-    return out + "\"";
-}
-
-std::string cost_json(const TourCost& c) {
-    return fmt::format("{{\"air_distance_mm\":{},\"air_time_s\":{},\"reversals\":{},\"reversal_time_s\":{}}}",
-                       c.air_distance_mm, c.air_time_s, c.reversals, c.reversal_time_s);
+std::string size_text(double size) {
+    return fmt::format("{}", size);
 }
 
 void print_json(const std::vector<Sole>& soles, const PatternOptions& o) {
-    std::string out = fmt::format("{{\"job\":{},\"mirror\":{},\"sizes\":[", quoted(o.job), o.mirror);
-    for (std::size_t i = 0; i < soles.size(); ++i) {
-        const SoleRun& r = soles[i].run;
-        const Grading& g = r.layout.grading;
-        out += fmt::format(
-            "{}{{\"size\":{},\"mirror\":{},\"scale\":{{\"length\":{},\"width\":{}}},\"motif_instances\":{},\"cuts\":{},"
-            "\"cut_length_mm\":{},\"outline_fit_error_mm\":{},\"outline_control_points\":{},\"border_offset_error_mm\":{},"
-            "\"drawing_order\":{},\"optimised_order\":{},\"bound\":{{\"air_distance_mm\":{},\"air_time_s\":{}}},"
-            "\"gap_to_bound\":{{\"air_distance\":{},\"air_time\":{}}},\"z_air_time_s\":{},"
-            "\"order_search\":{{\"passes\":{},\"evaluations\":{},\"budget_spent\":{}}},"
-            "\"planned\":{{\"cycle_time_s\":{},\"air_time_s\":{},\"cut_time_s\":{}}},\"program\":{},\"svg\":{}}}",
-            i == 0 ? "" : ",", g.size, g.mirror, g.scale_x, g.scale_y, r.layout.motif_instances, r.layout.cuts.size(),
-            r.cut_length_mm, r.layout.fit_error_mm, r.layout.control_points, r.layout.border_offset_error_mm,
-            cost_json(r.drawing), cost_json(r.optimised), r.bound_distance_mm, r.bound_time_s,
-            r.bound_distance_mm > 0 ? r.optimised.air_distance_mm / r.bound_distance_mm - 1 : 0.0,
-            r.bound_time_s > 0 ? r.optimised.air_time_s / r.bound_time_s - 1 : 0.0, r.z_air_time_s, r.search.passes,
-            r.search.evaluations, r.search.budget_spent, r.planned_cycle_s, r.planned_air_s, r.planned_cut_s,
-            soles[i].program_path.empty() ? "null" : quoted(soles[i].program_path),
-            soles[i].svg_path.empty() ? "null" : quoted(soles[i].svg_path));
+    nlohmann::ordered_json sizes = nlohmann::ordered_json::array();
+    for (const Sole& sole : soles) {
+        nlohmann::ordered_json size = to_json(sole.run);
+        size["program"] =
+            sole.program_path.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(sole.program_path);
+        size["svg"] = sole.svg_path.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(sole.svg_path);
+        sizes.push_back(std::move(size));
     }
-    out += "]}\n";
-    fmt::print("{}", out);
+    const nlohmann::ordered_json report{{"job", o.job}, {"mirror", o.mirror}, {"sizes", std::move(sizes)}};
+    fmt::print("{}\n", report.dump());
 }
 
 void print_text(const std::vector<Sole>& soles) {
@@ -161,8 +131,9 @@ int run_pattern(const PatternOptions& o) {
         std::string name = stem;
         if (size) name += "_" + size_text(*size);
         if (o.mirror) name += "_mirror";
-        const std::string title = fmt::format("nckit pattern {}: size {}{}", std::filesystem::path(o.job).filename().string(),
-                                              size ? size_text(*size) : "as digitised", o.mirror ? ", mirrored" : "");
+        const std::string title =
+            fmt::format("nckit pattern {}: size {}{}", std::filesystem::path(o.job).filename().string(),
+                        size ? size_text(*size) : "as digitised", o.mirror ? ", mirrored" : "");
         Result<SoleRun> run = run_pattern_sole(*job, *points, *grading, *machine, title);
         if (!run) {
             print_diagnostics(run.diagnostics());
@@ -190,8 +161,7 @@ int run_pattern(const PatternOptions& o) {
         sole.program_path = place(o.output, sole, ".nc");
         sole.svg_path = place(o.svg, sole, ".svg");
         if (!sole.program_path.empty() && !write_file(sole.program_path, sole.run.program)) return exit_bad_input;
-        if (!sole.svg_path.empty() &&
-            !write_file(sole.svg_path, pattern_svg(sole.run, *job, sole.name))) {
+        if (!sole.svg_path.empty() && !write_file(sole.svg_path, pattern_svg(sole.run, *job, sole.name))) {
             return exit_bad_input;
         }
     }
@@ -225,8 +195,9 @@ void add_pattern_verb(CLI::App& app, int& exit_status) {
     verb->add_option("-o,--output", options->output, "write the program (a folder when every size is made)");
     verb->add_option("--svg", options->svg, "draw outline, border, grooves and air moves (a folder for every size)");
     verb->add_flag("--json", options->json, "print the report as JSON");
-    verb->add_option("--html", options->html,
-                     "write an interactive page: the order's figures and the program's tool path (a folder for every size)");
+    verb->add_option(
+        "--html", options->html,
+        "write an interactive page: the order's figures and the program's tool path (a folder for every size)");
     verb->callback([options, &exit_status] { exit_status = run_pattern(*options); });
 }
 

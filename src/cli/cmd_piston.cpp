@@ -16,9 +16,9 @@
 #include "common.hpp"
 #include "nckit/report/process_pages.hpp"
 #include "partial_file.hpp"
-#include "nckit/process/piston.hpp"
-#include "nckit/process/piston_json.hpp"
-#include "nckit/process/piston_svg.hpp"
+#include "nckit/process/piston/piston.hpp"
+#include "nckit/process/piston/piston_json.hpp"
+#include "nckit/process/piston/piston_svg.hpp"
 #include "verbs.hpp"
 
 namespace nckit::cli {
@@ -54,8 +54,8 @@ void print_text(const PistonSimulation& s, const cam::PistonJob& job, const std:
                s.fit.peak_displacement_mm, s.fit.limit_mm, s.acceleration_mm_s2, s.acceleration_limit_mm_s2,
                std::isfinite(s.max_rpm) ? fmt::format("{:.0f}", std::floor(s.max_rpm)) : "no limit");
     fmt::print("  profile error over the turned surface   P-V um      RMS um\n");
-    for (const auto& [label, r] : {std::pair{"uncompensated", &f.uncompensated}, std::pair{"feedforward", &f.feedforward},
-                                   std::pair{"learning", &f.learning}}) {
+    for (const auto& [label, r] : {std::pair{"uncompensated", &f.uncompensated},
+                                   std::pair{"feedforward", &f.feedforward}, std::pair{"learning", &f.learning}}) {
         fmt::print("    {:<36} {:>9.4f} {:>11.4f}\n", label, r->pv_um, r->rms_um);
     }
     const std::string settled = s.settled_turn < 0 ? "never within 1 um per turn"
@@ -141,8 +141,8 @@ void add_piston_verb(CLI::App& app, int& exit_status) {
                      "write the drawn profile at the stations, every degree: z_mm,phi_deg,radius_mm");
     verb->add_option("--html", options->html,
                      "write an interactive page: section, error per turn, learning convergence (HTML)");
-    CLI::Option* trace = verb->add_option(
-        "--trace", options->trace, "write the learning run's last turns at every control tick (CSV)");
+    CLI::Option* trace =
+        verb->add_option("--trace", options->trace, "write the learning run's last turns at every control tick (CSV)");
     verb->add_option("--trace-turns", options->trace_turns, "turns in --trace (default 3)")
         ->check(CLI::Range(1, 1000000))
         ->needs(trace);

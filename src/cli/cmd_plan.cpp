@@ -38,11 +38,11 @@ std::string sync_json(const SyncReport& sync) {
     return out + "]}";
 }
 
-void print_report(const PlanOptions& options, const MachineConfig& machine, double cycle_time_s,
-                  std::int64_t moves, const AxisPeaks& peaks, const SyncReport& sync) {
+void print_report(const PlanOptions& options, const MachineConfig& machine, double cycle_time_s, std::int64_t moves,
+                  const AxisPeaks& peaks, const SyncReport& sync) {
     if (options.json) {
-        std::string out = fmt::format("{{\"cycle_time_s\":{},\"moves\":{},{},\"axes\":{{", json_number(cycle_time_s), moves,
-                                      sync_json(sync));
+        std::string out = fmt::format("{{\"cycle_time_s\":{},\"moves\":{},{},\"axes\":{{", json_number(cycle_time_s),
+                                      moves, sync_json(sync));
         bool first = true;
         for (std::size_t i = 0; i < axis_count; ++i) {
             auto axis = static_cast<Axis>(i);
@@ -133,9 +133,11 @@ void add_plan_verb(CLI::App& app, int& exit_status) {
         ->check(CLI::IsMember({"scurve", "trapezoid"}));
     verb->add_flag("--json", options->json, "print the report as one JSON object");
     verb->add_option("--trace", options->trace, "write the trajectory as CSV, sampled every period");
-    verb->add_option("--period", options->period_s, "trace sampling period S, seconds, > 0 (default: the machine's servo_period_s)")
+    verb->add_option("--period", options->period_s,
+                     "trace sampling period S, seconds, > 0 (default: the machine's servo_period_s)")
         ->check(CLI::PositiveNumber);
-    verb->add_option("--override", options->override_pct, "feed override PCT, percent, 1-200 (default 100; rapids keep theirs)")
+    verb->add_option("--override", options->override_pct,
+                     "feed override PCT, percent, 1-200 (default 100; rapids keep theirs)")
         ->check(CLI::Range(1.0, 200.0));
     verb->callback([options, &exit_status] { exit_status = run_plan(*options); });
 }

@@ -61,7 +61,10 @@ std::string report_json(const RestartReport& r, const MachineConfig& machine) {
                    r.rest_line);
     fmt::format_to(o, ",\"state\":{{\"units\":\"{}\",\"distance\":\"{}\",\"plane\":\"{}\",\"diameter_mode\":{}",
                    s.length_factor_mm == 1.0 ? "G21" : "G20", s.incremental ? "G91" : "G90",
-                   s.plane == Plane::xy ? "G17" : s.plane == Plane::zx ? "G18" : "G19", s.diameter_mode);
+                   s.plane == Plane::xy   ? "G17"
+                   : s.plane == Plane::zx ? "G18"
+                                          : "G19",
+                   s.diameter_mode);
     fmt::format_to(o, ",\"work_system\":\"G{}\",\"work_offset\":{},\"g92_offset\":{},\"g52_offset\":{}",
                    54 + s.work_system, vector_json(s.work_offset, machine), vector_json(s.g92_offset, machine),
                    vector_json(s.g52_offset, machine));
@@ -69,8 +72,8 @@ std::string report_json(const RestartReport& r, const MachineConfig& machine) {
                    r.io.tool_selected, r.io.tool_in_spindle, s.length_offset_code / 10,
                    s.length_offset_code % 10 != 0 ? ".1" : "", s.length_offset_h, vector_json(s.tool_offset, machine));
     fmt::format_to(o, ",\"spindle\":\"M{}\",\"speed\":{},\"constant_surface_speed\":{},\"rpm_clamp\":{}",
-                   r.io.spindle_mcode, r.io.speed_set ? json_number(r.io.speed) : "null",
-                   r.io.constant_surface_speed, json_number(r.io.rpm_clamp));
+                   r.io.spindle_mcode, r.io.speed_set ? json_number(r.io.speed) : "null", r.io.constant_surface_speed,
+                   json_number(r.io.rpm_clamp));
     std::string latched;
     for (int m : r.io.laser_on) latched += fmt::format("{}\"M{}\"", latched.empty() ? "" : ",", m);
     fmt::format_to(o, ",\"mist\":{},\"flood\":{},\"latched_mcodes\":[{}]", r.io.mist, r.io.flood, latched);
@@ -85,8 +88,9 @@ std::string report_json(const RestartReport& r, const MachineConfig& machine) {
         fmt::format_to(std::back_inserter(sides), "\"{}\":{}", letter(axis.axis), a.side[index(axis.axis)]);
     }
     sides += '}';
-    fmt::format_to(o, ",\"approach\":{{\"moves\":{},\"retract_axis\":\"{}\",\"safe_mm\":{},\"point\":{},\"sides\":{},"
-                      "\"takeup_mm\":{},\"clearance_mm\":{},\"feed_mm_min\":{}}}",
+    fmt::format_to(o,
+                   ",\"approach\":{{\"moves\":{},\"retract_axis\":\"{}\",\"safe_mm\":{},\"point\":{},\"sides\":{},"
+                   "\"takeup_mm\":{},\"clearance_mm\":{},\"feed_mm_min\":{}}}",
                    a.moves, letter(a.retract_axis), json_number(a.safe_mm), vector_json(a.point, machine), sides,
                    json_number(a.takeup_mm), json_number(a.clearance_mm), json_number(a.feed_mm_min));
     fmt::format_to(o, ",\"worst_deviation_mm\":{}}}\n", json_number(r.worst_deviation_mm));
@@ -123,13 +127,17 @@ int run_restart(const RestartOptions& options, const RestartTarget& target) {
 
 void add_restart_verb(CLI::App& app, int& exit_status) {
     auto options = std::make_shared<RestartOptions>();
-    CLI::App* verb = app.add_subcommand("restart", "Write a program that restarts a run at a block (power cut, broken tool)");
+    CLI::App* verb =
+        app.add_subcommand("restart", "Write a program that restarts a run at a block (power cut, broken tool)");
     verb->add_option("PROGRAM", options->program, "NC program")->required();
-    CLI::Option* seq = verb->add_option("--seq", options->seq, "restart at sequence number N (N:k: the k-th time it is reached)");
-    CLI::Option* line = verb->add_option("--line", options->line, "restart at the first block run from this line of PROGRAM")
-                            ->check(CLI::PositiveNumber);
-    CLI::Option* block = verb->add_option("--block", options->block, "restart at the B-th executed block that moves (1-based)")
-                             ->check(CLI::PositiveNumber);
+    CLI::Option* seq =
+        verb->add_option("--seq", options->seq, "restart at sequence number N (N:k: the k-th time it is reached)");
+    CLI::Option* line =
+        verb->add_option("--line", options->line, "restart at the first block run from this line of PROGRAM")
+            ->check(CLI::PositiveNumber);
+    CLI::Option* block =
+        verb->add_option("--block", options->block, "restart at the B-th executed block that moves (1-based)")
+            ->check(CLI::PositiveNumber);
     seq->excludes(line)->excludes(block);
     line->excludes(block);
     verb->add_option("-o,--output", options->output, "write the restart program here (default: standard output)");

@@ -37,9 +37,10 @@ void print_report(const ServoOptions& options, const MachineConfig& machine, con
         std::string out = "{\"axes\":{";
         bool first = true;
         for (const drive::FollowingError& axis : report.axes) {
-            out += fmt::format("{}\"{}\":{{\"max_following_error_mm\":{},\"rms_following_error_mm\":{},\"t_max_s\":{}}}",
-                               first ? "" : ",", letter(axis.axis), axis.max_following_error_mm,
-                               axis.rms_following_error_mm, axis.t_max_s);
+            out +=
+                fmt::format("{}\"{}\":{{\"max_following_error_mm\":{},\"rms_following_error_mm\":{},\"t_max_s\":{}}}",
+                            first ? "" : ",", letter(axis.axis), axis.max_following_error_mm,
+                            axis.rms_following_error_mm, axis.t_max_s);
             first = false;
         }
         fmt::print("{}}},\"duration_s\":{},\"samples\":{},\"period_s\":{}}}\n", out, report.duration_s, report.samples,
@@ -51,8 +52,8 @@ void print_report(const ServoOptions& options, const MachineConfig& machine, con
     fmt::print("axis {:>22} {:>22} {:>14}\n", "max |following error|", "rms following error", "at t");
     for (const drive::FollowingError& axis : report.axes) {
         const char* unit = machine.find(axis.axis)->kind == AxisKind::rotary ? "deg" : "mm";
-        fmt::print("{:<4} {:>18.6f} {:<3} {:>18.6f} {:<3} {:>12.6f} s\n", letter(axis.axis), axis.max_following_error_mm,
-                   unit, axis.rms_following_error_mm, unit, axis.t_max_s);
+        fmt::print("{:<4} {:>18.6f} {:<3} {:>18.6f} {:<3} {:>12.6f} s\n", letter(axis.axis),
+                   axis.max_following_error_mm, unit, axis.rms_following_error_mm, unit, axis.t_max_s);
     }
 }
 
@@ -86,8 +87,8 @@ int run_servo(const ServoOptions& options) {
         };
     }
     // A bad program reports nothing: returning drops the unfinished trace with its PartialFile.
-    if (!plan_program(*interpreter, planner, [&](const TrajectoryPiece& piece) { follower.add(piece, sink); },
-                      {}, &progress)) {
+    if (!plan_program(
+            *interpreter, planner, [&](const TrajectoryPiece& piece) { follower.add(piece, sink); }, {}, &progress)) {
         return exit_bad_input;
     }
     follower.finish(sink);

@@ -146,9 +146,10 @@ void add_steps_verb(CLI::App& app, int& exit_status) {
     add_machine_options(*verb, options->machine);
     verb->add_option("-o,--output", options->output, "output file; '-': standard output (the default)");
     verb->add_flag("--text", options->text, "one step a line: t_ns axis dir, and the port byte on phase-table axes");
-    auto* compress = verb->add_option("--compress", options->compress_text,
-                                      "write queue_step runs, every step within US microseconds of its time, US >= 0 (default 25)")
-                         ->expected(0, 1);
+    auto* compress =
+        verb->add_option("--compress", options->compress_text,
+                         "write queue_step runs, every step within US microseconds of its time, US >= 0 (default 25)")
+            ->expected(0, 1);
     verb->callback([options, compress, &exit_status] {
         if (compress->count() > 0) {
             try {

@@ -84,7 +84,9 @@ std::optional<std::string> unknown_verb_hint(const CLI::App& app, const std::str
     return hint + fmt::format("; the verbs are: {} (nckit VERB --help)", verbs);
 }
 
-std::string json_number(double value) { return std::isfinite(value) ? fmt::format("{}", value) : "null"; }
+std::string json_number(double value) {
+    return std::isfinite(value) ? fmt::format("{}", value) : "null";
+}
 
 void print_diagnostic(const Diagnostic& diagnostic) {
     std::fflush(stdout);
@@ -92,12 +94,13 @@ void print_diagnostic(const Diagnostic& diagnostic) {
     // The built-in machine is a mill: a lathe program's X-Z moves and spindle codes fail on it.
     static bool hinted = false;
     if (default_machine_in_use && program_looks_like_lathe && !hinted && diagnostic.severity == Severity::error &&
-        (diagnostic.code == "unknown-axis" || diagnostic.code == "travel-limit" ||
-         diagnostic.code == "spindle-limit" || diagnostic.code == "bad-combination" ||
-         diagnostic.code == "bad-arc" || diagnostic.code == "unsupported-word")) {
+        (diagnostic.code == "unknown-axis" || diagnostic.code == "travel-limit" || diagnostic.code == "spindle-limit" ||
+         diagnostic.code == "bad-combination" || diagnostic.code == "bad-arc" ||
+         diagnostic.code == "unsupported-word")) {
         hinted = true;
-        std::fprintf(stderr, "%s: note: no --machine given, so this ran on the built-in 3-axis mill; a lathe "
-                             "program needs its lathe, e.g. --machine examples/machines/lathe.toml\n",
+        std::fprintf(stderr,
+                     "%s: note: no --machine given, so this ran on the built-in 3-axis mill; a lathe "
+                     "program needs its lathe, e.g. --machine examples/machines/lathe.toml\n",
                      diagnostic.location.file_name().c_str());
     }
 }

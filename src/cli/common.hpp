@@ -17,15 +17,15 @@ constexpr int exit_bad_input = 2;
 
 //! The options of every verb that runs a program.
 struct MachineOptions {
-    std::string machine;       //!< --machine; empty: the built-in mill
-    std::string library;       //!< --library: folder of O-numbered programs (LinuxCNC: NAME.ngc subs)
-    std::string dialect;       //!< --dialect fanuc|linuxcnc; empty: the machine file's (default fanuc)
-    std::string tools;         //!< --tools: tool file (TOML or LinuxCNC tool.tbl); replaces the machine's
-    std::string vars;          //!< --vars: retained #500-#999; default: beside the machine file
+    std::string machine;  //!< --machine; empty: the built-in mill
+    std::string library;  //!< --library: folder of O-numbered programs (LinuxCNC: NAME.ngc subs)
+    std::string dialect;  //!< --dialect fanuc|linuxcnc; empty: the machine file's (default fanuc)
+    std::string tools;    //!< --tools: tool file (TOML or LinuxCNC tool.tbl); replaces the machine's
+    std::string vars;     //!< --vars: retained #500-#999; default: beside the machine file
     std::int64_t max_blocks = InterpreterOptions{}.max_blocks;
     bool block_delete = false;
-    bool quiet = false;        //!< --quiet: no progress on stderr
-    bool keep_going = false;   //!< report a block's error and go on (nckit check)
+    bool quiet = false;       //!< --quiet: no progress on stderr
+    bool keep_going = false;  //!< report a block's error and go on (nckit check)
 };
 
 void add_machine_options(CLI::App& verb, MachineOptions& options);

@@ -26,8 +26,11 @@ std::string grouped(std::int64_t n) {
 }  // namespace
 
 Progress::Progress(std::string what, std::string unit, bool quiet)
-    : what_(std::move(what)), unit_(std::move(unit)), enabled_(!quiet && ::isatty(STDERR_FILENO) == 1),
-      start_(Clock::now()), last_draw_(start_) {}
+    : what_(std::move(what)),
+      unit_(std::move(unit)),
+      enabled_(!quiet && ::isatty(STDERR_FILENO) == 1),
+      start_(Clock::now()),
+      last_draw_(start_) {}
 
 void Progress::redraw(std::int64_t count, double fraction_done) {
     const Clock::time_point now = Clock::now();

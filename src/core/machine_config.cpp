@@ -16,10 +16,10 @@ namespace nckit {
 
 namespace {
 
-using detail::ConfigSink;
-using detail::Need;
-using detail::Sign;
-using detail::TableReader;
+using core_detail::ConfigSink;
+using core_detail::Need;
+using core_detail::Sign;
+using core_detail::TableReader;
 
 //! One [[axis]] as read: the config, plus what the cross-axis checks need even when the
 //! table had errors of its own (a duplicate is worth reporting alongside a bad limit).
@@ -36,7 +36,7 @@ void read_mcode_list(TableReader& reader, std::string_view key, std::vector<int>
     if (codes == nullptr) return;
     const std::string what = fmt::format("each entry of '{}'", key);
     for (const toml::node& code : *codes) {
-        const std::optional<int> value = detail::to_int(code, what, Sign::non_negative, sink);
+        const std::optional<int> value = core_detail::to_int(code, what, Sign::non_negative, sink);
         if (value) out.push_back(*value);
     }
 }
@@ -96,8 +96,8 @@ void read_machine(const toml::table& table, MachineConfig& config, ConfigSink& s
     if (reader.has("servo_period_s") && config.servo_period_s > 0 &&
         !(config.servo_period_s >= 1e-6 && config.servo_period_s <= 1.0)) {
         sink.error(reader.region_of("servo_period_s"), "config-value",
-                     fmt::format("'servo_period_s' = {} is implausible: it must lie between 1e-06 and 1 s",
-                                 config.servo_period_s));
+                   fmt::format("'servo_period_s' = {} is implausible: it must lie between 1e-06 and 1 s",
+                               config.servo_period_s));
     }
     if (std::optional<bool> diameter = reader.flag("diameter_mode", Need::optional)) {
         config.diameter_mode = *diameter;
@@ -115,8 +115,7 @@ void read_machine(const toml::table& table, MachineConfig& config, ConfigSink& s
     }
 
     // Each list of names sits beside the enum values it maps to, in the same order.
-    constexpr std::array decimal_point_modes{DecimalPointInput::calculator,
-                                             DecimalPointInput::least_increment};
+    constexpr std::array decimal_point_modes{DecimalPointInput::calculator, DecimalPointInput::least_increment};
     if (auto i = reader.choice("decimal_point_input", Need::optional, "decimal_point_input",
                                {"calculator", "least_increment"})) {
         config.decimal_point_input = decimal_point_modes[*i];
@@ -167,15 +166,15 @@ void read_limits(TableReader& reader, AxisConfig& axis, ConfigSink& sink) {
         double low;
         double high;
     };
-    for (const Bound& b : {Bound{"max_velocity", axis.max_velocity, 1e-3, 1e6},
-                           Bound{"max_acceleration", axis.max_acceleration, 1e-3, 1e9},
-                           Bound{"max_jerk", axis.max_jerk, 1e-3, 1e12},
-                           Bound{"steps_per_unit", axis.steps_per_unit, 1e-3, 1e9},
-                           Bound{"backlash", axis.backlash, 0.0, 1e3},
-                           Bound{"backlash_rate_steps_s", axis.backlash_rate_steps_s, 1e-3, 1e9}}) {
+    for (const Bound& b :
+         {Bound{"max_velocity", axis.max_velocity, 1e-3, 1e6},
+          Bound{"max_acceleration", axis.max_acceleration, 1e-3, 1e9}, Bound{"max_jerk", axis.max_jerk, 1e-3, 1e12},
+          Bound{"steps_per_unit", axis.steps_per_unit, 1e-3, 1e9}, Bound{"backlash", axis.backlash, 0.0, 1e3},
+          Bound{"backlash_rate_steps_s", axis.backlash_rate_steps_s, 1e-3, 1e9}}) {
         if (!reader.has(b.key) || (b.value >= b.low && b.value <= b.high) || !(b.value > 0 || b.low == 0)) continue;
-        sink.error(reader.region_of(b.key), "config-value",
-                     fmt::format("'{}' = {} is implausible: it must lie between {} and {}", b.key, b.value, b.low, b.high));
+        sink.error(
+            reader.region_of(b.key), "config-value",
+            fmt::format("'{}' = {} is implausible: it must lie between {} and {}", b.key, b.value, b.low, b.high));
     }
 }
 
@@ -185,8 +184,9 @@ void read_travel(TableReader& reader, AxisConfig& axis, ConfigSink& sink) {
     const bool have_home = reader.number_into("home", Need::optional, Sign::any, axis.home);
     if (auto change = reader.number("tool_change", Need::optional)) {
         if (*change < axis.min || *change > axis.max) {
-            sink.error(reader.region_of("tool_change"), "config-value",
-                       fmt::format("'tool_change' ({}) must lie within min..max ({}..{})", *change, axis.min, axis.max));
+            sink.error(
+                reader.region_of("tool_change"), "config-value",
+                fmt::format("'tool_change' ({}) must lie within min..max ({}..{})", *change, axis.min, axis.max));
         }
         axis.tool_change = *change;
     }
@@ -208,13 +208,12 @@ void read_travel(TableReader& reader, AxisConfig& axis, ConfigSink& sink) {
     if (axis.home >= axis.min && axis.home <= axis.max) return;
     if (have_home) {
         sink.error(reader.region_of("home"), "config-value",
-                   fmt::format("'home' ({}) must lie within min..max ({}..{})", axis.home,
-                               axis.min, axis.max));
+                   fmt::format("'home' ({}) must lie within min..max ({}..{})", axis.home, axis.min, axis.max));
     } else if (!reader.has("home")) {
         // G28 would drive to the default 0 beyond the travel; make the user choose a home.
-        sink.error(reader.region(), "config-value",
-                   fmt::format("'home' defaults to 0, which lies outside min..max ({}..{}): set it",
-                               axis.min, axis.max));
+        sink.error(
+            reader.region(), "config-value",
+            fmt::format("'home' defaults to 0, which lies outside min..max ({}..{}): set it", axis.min, axis.max));
     }
 }
 
@@ -222,11 +221,14 @@ void read_travel(TableReader& reader, AxisConfig& axis, ConfigSink& sink) {
 //! clear. Spelt here because core cannot ask the drive stage.
 std::uint8_t winding_mask(PhaseTableKind kind) {
     switch (kind) {
-    case PhaseTableKind::none: return 0;
-    case PhaseTableKind::three_phase_six_beat:
-    case PhaseTableKind::three_phase_three_beat: return 0x07;
-    case PhaseTableKind::two_phase_full_step:
-    case PhaseTableKind::two_phase_half_step: return 0x0F;
+        case PhaseTableKind::none:
+            return 0;
+        case PhaseTableKind::three_phase_six_beat:
+        case PhaseTableKind::three_phase_three_beat:
+            return 0x07;
+        case PhaseTableKind::two_phase_full_step:
+        case PhaseTableKind::two_phase_half_step:
+            return 0x0F;
     }
     return 0;
 }
@@ -266,7 +268,7 @@ void read_servo(TableReader& axis_reader, AxisConfig& axis, ConfigSink& sink) {
     if (table == nullptr) {
         sink.error(node->source(), "config-type",
                    fmt::format("'servo' must be a table ([axis.servo] after its [[axis]]), not {}",
-                               detail::type_name(node->type())));
+                               core_detail::type_name(node->type())));
         return;
     }
     TableReader reader(*table, "[axis.servo]", sink);
@@ -285,8 +287,7 @@ AxisEntry read_axis(const toml::table& table, ConfigSink& sink) {
     TableReader reader(table, "[[axis]]", sink);
     AxisEntry entry;
     static_assert(axis_letters == "XYZABCUVW", "the name choices below follow Axis's order");
-    if (auto i = reader.choice("name", Need::required, "axis",
-                               {"X", "Y", "Z", "A", "B", "C", "U", "V", "W"})) {
+    if (auto i = reader.choice("name", Need::required, "axis", {"X", "Y", "Z", "A", "B", "C", "U", "V", "W"})) {
         entry.config.axis = static_cast<Axis>(*i);
         entry.named = true;
         entry.name_region = reader.region_of("name");
@@ -299,8 +300,8 @@ AxisEntry read_axis(const toml::table& table, ConfigSink& sink) {
     read_travel(reader, entry.config, sink);
     static_assert(phase_table_names.size() == 5, "the phase_table choices below follow the names");
     if (auto i = reader.choice("phase_table", Need::optional, "phase_table",
-                               {phase_table_names[0], phase_table_names[1], phase_table_names[2],
-                                phase_table_names[3], phase_table_names[4]})) {
+                               {phase_table_names[0], phase_table_names[1], phase_table_names[2], phase_table_names[3],
+                                phase_table_names[4]})) {
         entry.config.phase_table = static_cast<PhaseTableKind>(*i);
     }
     read_port(reader, entry.config, sink);
@@ -318,9 +319,9 @@ void read_axes(TableReader& root, MachineConfig& config, ConfigSink& sink) {
     }
     const toml::array* tables = node->as_array();
     if (tables == nullptr) {
-        sink.error(node->source(), "config-type",
-                   fmt::format("'axis' must be an array of tables ([[axis]]), not {}",
-                               detail::type_name(node->type())));
+        sink.error(
+            node->source(), "config-type",
+            fmt::format("'axis' must be an array of tables ([[axis]]), not {}", core_detail::type_name(node->type())));
         return;
     }
     if (tables->empty()) {
@@ -332,17 +333,16 @@ void read_axes(TableReader& root, MachineConfig& config, ConfigSink& sink) {
         const toml::table* table = element.as_table();
         if (table == nullptr) {
             sink.error(element.source(), "config-type",
-                       fmt::format("each [[axis]] must be a table, not {}",
-                                   detail::type_name(element.type())));
+                       fmt::format("each [[axis]] must be a table, not {}", core_detail::type_name(element.type())));
             continue;
         }
         AxisEntry entry = read_axis(*table, sink);
         if (entry.named) {
             std::optional<std::uint32_t>& first = first_line[index(entry.config.axis)];
             if (first) {
-                sink.error(entry.name_region, "config-duplicate-axis",
-                           fmt::format("axis '{}' is listed twice (first at line {})",
-                                       letter(entry.config.axis), *first));
+                sink.error(
+                    entry.name_region, "config-duplicate-axis",
+                    fmt::format("axis '{}' is listed twice (first at line {})", letter(entry.config.axis), *first));
             } else {
                 first = entry.name_region.begin.line;
             }
@@ -383,8 +383,8 @@ MachineConfig read_document(const toml::table& document, ConfigSink& sink) {
     read_axes(root, config, sink);
     const toml::table* machine_table = document["machine"].as_table();
     const toml::node* system = machine_table != nullptr ? machine_table->get("gcode_system") : nullptr;
-    const bool lathe = config.find(Axis::X) != nullptr && config.find(Axis::Z) != nullptr &&
-                       config.find(Axis::Y) == nullptr;
+    const bool lathe =
+        config.find(Axis::X) != nullptr && config.find(Axis::Z) != nullptr && config.find(Axis::Y) == nullptr;
     if (system != nullptr && config.gcode_system != GCodeSystem::none && !lathe) {
         // Fanuc's systems A, B and C are a lathe's (X and Z, no Y): a mill has one set of codes.
         sink.error(system->source(), "config-value", "'gcode_system' is for lathes (X and Z axes, no Y)");
@@ -392,26 +392,25 @@ MachineConfig read_document(const toml::table& document, ConfigSink& sink) {
     if (const toml::table* spindle = root.table("spindle", Need::optional)) {
         read_spindle(*spindle, config, sink);
     }
-    detail::read_probe_and_inputs(root, config, sink);
+    core_detail::read_probe_and_inputs(root, config, sink);
     root.reject_unknown_keys();
     return config;
 }
 
 //! The document's config, or every problem found in it, sorted top to bottom.
-Result<MachineConfig> read_file(Result<detail::TomlFile> file) {
+Result<MachineConfig> read_file(Result<core_detail::TomlFile> file) {
     if (!file) return file.diagnostics();
     ConfigSink sink{file->name, {}};
     MachineConfig config = read_document(file->document, sink);
     if (sink.diagnostics.empty()) return config;
-    detail::sort_by_position(sink.diagnostics);
+    core_detail::sort_by_position(sink.diagnostics);
     return std::move(sink.diagnostics);
 }
 
 }  // namespace
 
 const AxisConfig* MachineConfig::find(Axis axis) const {
-    const auto hit = std::find_if(axes.begin(), axes.end(),
-                                  [axis](const AxisConfig& a) { return a.axis == axis; });
+    const auto hit = std::find_if(axes.begin(), axes.end(), [axis](const AxisConfig& a) { return a.axis == axis; });
     return hit != axes.end() ? &*hit : nullptr;
 }
 
@@ -430,16 +429,15 @@ bool MachineConfig::is_laser_off_mcode(int code) const {
 }
 
 bool MachineConfig::is_exact_stop_mcode(int code) const {
-    return std::find(exact_stop_mcodes.begin(), exact_stop_mcodes.end(), code) !=
-           exact_stop_mcodes.end();
+    return std::find(exact_stop_mcodes.begin(), exact_stop_mcodes.end(), code) != exact_stop_mcodes.end();
 }
 
 Result<MachineConfig> parse_machine_config(std::string_view toml_text, const std::string& file_name) {
-    return read_file(detail::parse_toml_text(toml_text, file_name));
+    return read_file(core_detail::parse_toml_text(toml_text, file_name));
 }
 
 Result<MachineConfig> load_machine_config(const std::filesystem::path& path) {
-    return read_file(detail::load_toml_file(path, "machine config"));
+    return read_file(core_detail::load_toml_file(path, "machine config"));
 }
 
 }  // namespace nckit

@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-namespace nckit::detail {
+namespace nckit::core_detail {
 
 namespace {
 
@@ -67,4 +67,4 @@ void read_probe_and_inputs(TableReader& root, MachineConfig& config, ConfigSink&
     }
 }
 
-}  // namespace nckit::detail
+}  // namespace nckit::core_detail

@@ -4,9 +4,9 @@
 #include "nckit/core/machine.hpp"
 #include "nckit/core/toml_table_reader.hpp"
 
-namespace nckit::detail {
+namespace nckit::core_detail {
 
 //! Reads `[probe] surfaces = [{ axis = "Z", at = -20.0 }, ...]` and `[inputs] 1000 = 1`.
 void read_probe_and_inputs(TableReader& root, MachineConfig& config, ConfigSink& sink);
 
-}  // namespace nckit::detail
+}  // namespace nckit::core_detail

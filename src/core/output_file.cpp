@@ -151,8 +151,9 @@ std::variant<OutputFile, OutputError> OutputFile::open(const std::string& name) 
     int fd = ::open(out.partial_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, mode);
     if (fd < 0) {
         int saved = errno;
-        return error_of(name, saved, fmt::format("cannot create '{}' in folder '{}'", out.partial_.filename().string(),
-                                                 folder_of(target)));
+        return error_of(
+            name, saved,
+            fmt::format("cannot create '{}' in folder '{}'", out.partial_.filename().string(), folder_of(target)));
     }
     if (exists) ::fchmod(fd, mode);  // keep the replaced file's permissions whatever the umask
     out.stream_ = ::fdopen(fd, "wb");
@@ -166,7 +167,9 @@ std::variant<OutputFile, OutputError> OutputFile::open(const std::string& name) 
     return out;
 }
 
-OutputFile::OutputFile(OutputFile&& other) noexcept { *this = std::move(other); }
+OutputFile::OutputFile(OutputFile&& other) noexcept {
+    *this = std::move(other);
+}
 
 OutputFile& OutputFile::operator=(OutputFile&& other) noexcept {
     if (this != &other) {
@@ -181,13 +184,19 @@ OutputFile& OutputFile::operator=(OutputFile&& other) noexcept {
     return *this;
 }
 
-OutputFile::~OutputFile() { discard(); }
+OutputFile::~OutputFile() {
+    discard();
+}
 
 void OutputFile::discard() {
     if (stream_ == nullptr) return;
     switch (kind_) {
-        case Kind::standard_output: std::fflush(stdout); break;
-        case Kind::write_through: std::fclose(stream_); break;
+        case Kind::standard_output:
+            std::fflush(stdout);
+            break;
+        case Kind::write_through:
+            std::fclose(stream_);
+            break;
         case Kind::atomic_replace:
             std::fclose(stream_);
             ::unlink(partial_.c_str());
@@ -204,7 +213,8 @@ std::optional<OutputError> OutputFile::commit() {
     errno = 0;
     bool ok = std::fflush(stream) == 0 && std::ferror(stream) == 0;
     int saved = errno != 0 ? errno : EIO;
-    if (kind_ == Kind::standard_output) return ok ? std::nullopt : std::optional(error_of(name_, saved, "standard output"));
+    if (kind_ == Kind::standard_output)
+        return ok ? std::nullopt : std::optional(error_of(name_, saved, "standard output"));
     if (kind_ == Kind::write_through) {
         ok = std::fclose(stream) == 0 && ok;
         if (!ok) return error_of(name_, errno != 0 ? errno : saved, "");

@@ -10,7 +10,7 @@
 
 #include <fmt/format.h>
 
-namespace nckit::detail {
+namespace nckit::core_detail {
 
 namespace {
 
@@ -76,4 +76,4 @@ void sort_by_position(Diagnostics& diagnostics) {
     });
 }
 
-}  // namespace nckit::detail
+}  // namespace nckit::core_detail

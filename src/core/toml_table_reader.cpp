@@ -7,28 +7,27 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-namespace nckit::detail {
+namespace nckit::core_detail {
 
 namespace {
 
 // Shared by floats and integers so both spell the rule the same way.
 template <class T>
-bool check_sign(const toml::node& node, std::string_view what, Sign sign, T value,
-                ConfigSink& sink) {
+bool check_sign(const toml::node& node, std::string_view what, Sign sign, T value, ConfigSink& sink) {
     if (sign == Sign::positive && !(value > 0)) {
-        sink.error(node.source(), "config-value",
-                   fmt::format("{} must be positive, not {}", what, value));
+        sink.error(node.source(), "config-value", fmt::format("{} must be positive, not {}", what, value));
         return false;
     }
     if (sign == Sign::non_negative && value < 0) {
-        sink.error(node.source(), "config-value",
-                   fmt::format("{} must be zero or more, not {}", what, value));
+        sink.error(node.source(), "config-value", fmt::format("{} must be zero or more, not {}", what, value));
         return false;
     }
     return true;
 }
 
-std::string quoted(std::string_view key) { return fmt::format("'{}'", key); }
+std::string quoted(std::string_view key) {
+    return fmt::format("'{}'", key);
+}
 
 }  // namespace
 
@@ -42,22 +41,31 @@ void ConfigSink::error(const toml::source_region& region, std::string code, std:
 
 std::string_view type_name(toml::node_type type) {
     switch (type) {
-        case toml::node_type::none: return "nothing";
-        case toml::node_type::table: return "a table";
-        case toml::node_type::array: return "an array";
-        case toml::node_type::string: return "a string";
-        case toml::node_type::integer: return "an integer";
-        case toml::node_type::floating_point: return "a floating-point number";
-        case toml::node_type::boolean: return "a boolean";
-        case toml::node_type::date: return "a date";
-        case toml::node_type::time: return "a time";
-        case toml::node_type::date_time: return "a date-time";
+        case toml::node_type::none:
+            return "nothing";
+        case toml::node_type::table:
+            return "a table";
+        case toml::node_type::array:
+            return "an array";
+        case toml::node_type::string:
+            return "a string";
+        case toml::node_type::integer:
+            return "an integer";
+        case toml::node_type::floating_point:
+            return "a floating-point number";
+        case toml::node_type::boolean:
+            return "a boolean";
+        case toml::node_type::date:
+            return "a date";
+        case toml::node_type::time:
+            return "a time";
+        case toml::node_type::date_time:
+            return "a date-time";
     }
     return "an unknown value";
 }
 
-std::optional<double> to_number(const toml::node& node, std::string_view what, Sign sign,
-                                ConfigSink& sink) {
+std::optional<double> to_number(const toml::node& node, std::string_view what, Sign sign, ConfigSink& sink) {
     std::optional<double> value;
     if (const auto* f = node.as_floating_point()) value = f->get();
     if (const auto* i = node.as_integer()) value = static_cast<double>(i->get());
@@ -68,16 +76,14 @@ std::optional<double> to_number(const toml::node& node, std::string_view what, S
     }
     // TOML allows inf and nan; neither is a usable limit or travel.
     if (!std::isfinite(*value)) {
-        sink.error(node.source(), "config-value",
-                   fmt::format("{} must be a finite number, not {}", what, *value));
+        sink.error(node.source(), "config-value", fmt::format("{} must be a finite number, not {}", what, *value));
         return std::nullopt;
     }
     if (!check_sign(node, what, sign, *value, sink)) return std::nullopt;
     return value;
 }
 
-std::optional<int> to_int(const toml::node& node, std::string_view what, Sign sign,
-                          ConfigSink& sink) {
+std::optional<int> to_int(const toml::node& node, std::string_view what, Sign sign, ConfigSink& sink) {
     const auto* i = node.as_integer();
     if (i == nullptr) {
         sink.error(node.source(), "config-type",
@@ -87,8 +93,7 @@ std::optional<int> to_int(const toml::node& node, std::string_view what, Sign si
     const std::int64_t value = i->get();
     if (!check_sign(node, what, sign, value, sink)) return std::nullopt;
     if (value < std::numeric_limits<int>::min() || value > std::numeric_limits<int>::max()) {
-        sink.error(node.source(), "config-value",
-                   fmt::format("{} is out of range: {}", what, value));
+        sink.error(node.source(), "config-value", fmt::format("{} is out of range: {}", what, value));
         return std::nullopt;
     }
     return static_cast<int>(value);
@@ -105,14 +110,12 @@ const toml::node* TableReader::node(std::string_view key, Need need) {
     known_keys_.emplace_back(key);
     const toml::node* found = table_.get(key);
     if (found == nullptr && need == Need::required) {
-        sink_.error(table_.source(), "config-missing-key",
-                    fmt::format("missing key '{}' {}", key, in_label()));
+        sink_.error(table_.source(), "config-missing-key", fmt::format("missing key '{}' {}", key, in_label()));
     }
     return found;
 }
 
-void TableReader::wrong_type(std::string_view key, const toml::node& found,
-                             std::string_view expected) {
+void TableReader::wrong_type(std::string_view key, const toml::node& found, std::string_view expected) {
     sink_.error(found.source(), "config-type",
                 fmt::format("'{}' must be {}, not {}", key, expected, type_name(found.type())));
 }
@@ -162,9 +165,8 @@ const toml::table* TableReader::table(std::string_view key, Need need) {
     return nullptr;
 }
 
-std::optional<std::size_t> TableReader::choice(std::string_view key, Need need,
-                                                std::string_view noun,
-                                                std::initializer_list<std::string_view> choices) {
+std::optional<std::size_t> TableReader::choice(std::string_view key, Need need, std::string_view noun,
+                                               std::initializer_list<std::string_view> choices) {
     const std::optional<std::string> value = text(key, need);
     if (!value) return std::nullopt;
     const auto* hit = std::find(choices.begin(), choices.end(), *value);
@@ -195,4 +197,4 @@ void TableReader::reject_unknown_keys() {
     }
 }
 
-}  // namespace nckit::detail
+}  // namespace nckit::core_detail

@@ -5,7 +5,6 @@
 
 #include <fmt/format.h>
 
-
 namespace nckit {
 
 const ToolEntry* ToolTable::find(int number) const {

@@ -24,8 +24,8 @@ struct LineReader {
     Diagnostics& diagnostics;
 
     void error(std::size_t column, std::string message) {
-        diagnostics.push_back(error_at(make_location(file, line, static_cast<std::uint32_t>(column + 1)),
-                                       "tool-table", std::move(message)));
+        diagnostics.push_back(error_at(make_location(file, line, static_cast<std::uint32_t>(column + 1)), "tool-table",
+                                       std::move(message)));
     }
 };
 
@@ -43,7 +43,9 @@ std::optional<double> read_number(std::string_view text, std::size_t& pos) {
     return value;
 }
 
-bool is_whole(double value) { return value == std::floor(value); }
+bool is_whole(double value) {
+    return value == std::floor(value);
+}
 
 //! One line into `tool`; false when it has an error (reported) or no T word.
 bool read_row(std::string_view text, LineReader& reader, bool inch, ToolEntry& tool, bool& has_tool) {
@@ -54,8 +56,10 @@ bool read_row(std::string_view text, LineReader& reader, bool inch, ToolEntry& t
         char c = text[pos];
         if (c == ';') {
             std::string_view comment = text.substr(pos + 1);
-            while (!comment.empty() && std::isspace(static_cast<unsigned char>(comment.front()))) comment.remove_prefix(1);
-            while (!comment.empty() && std::isspace(static_cast<unsigned char>(comment.back()))) comment.remove_suffix(1);
+            while (!comment.empty() && std::isspace(static_cast<unsigned char>(comment.front())))
+                comment.remove_prefix(1);
+            while (!comment.empty() && std::isspace(static_cast<unsigned char>(comment.back())))
+                comment.remove_suffix(1);
             tool.comment = std::string(comment);
             break;
         }
@@ -81,14 +85,17 @@ bool read_row(std::string_view text, LineReader& reader, bool inch, ToolEntry& t
         }
         seen[letter - 'A'] = true;
         if ((letter == 'Z' || letter == 'X' || letter == 'D') && std::abs(*value * scale) > max_tool_value_mm) {
-            reader.error(column, fmt::format("{} {} is beyond the {} mm a tool can measure", letter, *value,
-                                             max_tool_value_mm));
+            reader.error(
+                column, fmt::format("{} {} is beyond the {} mm a tool can measure", letter, *value, max_tool_value_mm));
             return false;
         }
         switch (letter) {
-            case 'T': case 'P': case 'Q':
+            case 'T':
+            case 'P':
+            case 'Q':
                 if (!is_whole(*value) || *value < 0 || *value > max_tool_number) {
-                    reader.error(column, fmt::format("{} must be a whole number from 0 to {}", letter, max_tool_number));
+                    reader.error(column,
+                                 fmt::format("{} must be a whole number from 0 to {}", letter, max_tool_number));
                     return false;
                 }
                 if (letter == 'T') {
@@ -103,8 +110,12 @@ bool read_row(std::string_view text, LineReader& reader, bool inch, ToolEntry& t
                     tool.orientation = static_cast<int>(*value);
                 }
                 break;
-            case 'Z': tool.length_mm = *value * scale; break;
-            case 'X': tool.x_offset_mm = *value * scale; break;
+            case 'Z':
+                tool.length_mm = *value * scale;
+                break;
+            case 'X':
+                tool.x_offset_mm = *value * scale;
+                break;
             case 'D':
                 if (*value < 0) {
                     reader.error(column, "D (diameter) must not be negative");
@@ -112,9 +123,19 @@ bool read_row(std::string_view text, LineReader& reader, bool inch, ToolEntry& t
                 }
                 tool.radius_mm = *value * scale / 2.0;
                 break;
-            case 'I': tool.front_angle_deg = *value; break;
-            case 'J': tool.back_angle_deg = *value; break;
-            case 'Y': case 'A': case 'B': case 'C': case 'U': case 'V': case 'W':
+            case 'I':
+                tool.front_angle_deg = *value;
+                break;
+            case 'J':
+                tool.back_angle_deg = *value;
+                break;
+            case 'Y':
+            case 'A':
+            case 'B':
+            case 'C':
+            case 'U':
+            case 'V':
+            case 'W':
                 // Offsets along other axes are columns LinuxCNC keeps; nckit offsets Z (and a
                 // lathe's X) only, so a value there would be silently dropped.
                 if (*value != 0) {

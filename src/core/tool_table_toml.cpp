@@ -12,10 +12,10 @@ namespace nckit {
 
 namespace {
 
-using detail::ConfigSink;
-using detail::Need;
-using detail::Sign;
-using detail::TableReader;
+using core_detail::ConfigSink;
+using core_detail::Need;
+using core_detail::Sign;
+using core_detail::TableReader;
 
 //! A radius may be given as a diameter (tool catalogues) or a radius (offset pages); not both.
 void read_radius(TableReader& reader, std::string_view radius_key, std::string_view diameter_key, double& out,
@@ -68,8 +68,7 @@ std::optional<ToolEntry> read_tool(const toml::table& table, ConfigSink& sink) {
         double value_mm;
         std::array<std::string_view, 3> keys;  // the column's own key first; empty when fewer
     };
-    for (const Column& column : {Column{tool.length_mm, {"length_mm"}},
-                                 Column{tool.length_wear_mm, {"length_wear_mm"}},
+    for (const Column& column : {Column{tool.length_mm, {"length_mm"}}, Column{tool.length_wear_mm, {"length_wear_mm"}},
                                  Column{tool.radius_mm, {"radius_mm", "diameter_mm", "nose_radius_mm"}},
                                  Column{tool.radius_wear_mm, {"radius_wear_mm", "diameter_wear_mm"}},
                                  Column{tool.x_offset_mm, {"x_offset_mm"}}, Column{tool.x_wear_mm, {"x_wear_mm"}}}) {
@@ -88,7 +87,7 @@ std::optional<ToolEntry> read_tool(const toml::table& table, ConfigSink& sink) {
 }  // namespace
 
 Result<ToolTable> parse_tool_toml(std::string_view text, const std::string& file_name) {
-    Result<detail::TomlFile> file = detail::parse_toml_text(text, file_name);
+    Result<core_detail::TomlFile> file = core_detail::parse_toml_text(text, file_name);
     if (!file) return file.diagnostics();
     ConfigSink sink{file->name, {}};
     ToolTable table;
@@ -97,8 +96,9 @@ Result<ToolTable> parse_tool_toml(std::string_view text, const std::string& file
         for (const toml::node& element : *tools) {
             const toml::table* row = element.as_table();
             if (row == nullptr) {
-                sink.error(element.source(), "config-type",
-                           fmt::format("each [[tool]] must be a table, not {}", detail::type_name(element.type())));
+                sink.error(
+                    element.source(), "config-type",
+                    fmt::format("each [[tool]] must be a table, not {}", core_detail::type_name(element.type())));
                 continue;
             }
             std::optional<ToolEntry> tool = read_tool(*row, sink);
@@ -113,7 +113,7 @@ Result<ToolTable> parse_tool_toml(std::string_view text, const std::string& file
     }
     root.reject_unknown_keys();
     if (sink.diagnostics.empty()) return table;
-    detail::sort_by_position(sink.diagnostics);
+    core_detail::sort_by_position(sink.diagnostics);
     return std::move(sink.diagnostics);
 }
 

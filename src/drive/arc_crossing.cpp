@@ -51,7 +51,10 @@ static std::vector<double> quintic_turning_points(const PathSegment& g, std::siz
             double hi = s_b;
             for (int it = 0; it < 100 && hi - lo > 1e-15 * g.length; ++it) {
                 const double mid = 0.5 * (lo + hi);
-                if ((slope(mid) > 0) == (f_a > 0)) lo = mid; else hi = mid;
+                if ((slope(mid) > 0) == (f_a > 0))
+                    lo = mid;
+                else
+                    hi = mid;
             }
             const double s = 0.5 * (lo + hi);
             if (s > 0 && s < g.length) out.push_back(s);
@@ -101,8 +104,7 @@ double arc_crossing_newton(const PathSegment& g, std::size_t i, double spu, doub
 bool ArcAxisCrossings::applies(const PathSegment& g, std::size_t i) {
     const double amplitude = g.radius_mm * std::hypot(g.u[i], g.v[i]);
     const double k = g.angle_rate;
-    return amplitude > 0 && k > 0 && std::isfinite(amplitude * k) &&
-           std::abs(g.rate[i]) <= 1e-6 * amplitude * k;
+    return amplitude > 0 && k > 0 && std::isfinite(amplitude * k) && std::abs(g.rate[i]) <= 1e-6 * amplitude * k;
 }
 
 ArcAxisCrossings::ArcAxisCrossings(const PathSegment& g, std::size_t i) {

@@ -18,8 +18,8 @@ namespace nckit::drive_detail {
 //! rising when direction > 0. Newton on the exact derivative from `guess` (sine and cosine from
 //! the library at every iterate), safeguarded by bisection: the reference the closed form below
 //! is tested against, and its fallback.
-[[nodiscard]] double arc_crossing_newton(const PathSegment& g, std::size_t i, double spu, double target,
-                                         double lo, double hi, int direction, double guess);
+[[nodiscard]] double arc_crossing_newton(const PathSegment& g, std::size_t i, double spu, double target, double lo,
+                                         double hi, int direction, double guess);
 
 //! The crossings of one axis in closed form: on an interval where the axis moves one way,
 //! k s - psi stays on one branch of the cosine, so s = (branch(acos(c)) + psi) / k with
@@ -59,17 +59,17 @@ public:
     }
 
 private:
-    double origin_ = 0;     //!< mm, o
-    double rate_ = 0;       //!< mm per unit s, r
+    double origin_ = 0;         //!< mm, o
+    double rate_ = 0;           //!< mm per unit s, r
     double inv_amplitude_ = 0;  //!< 1 / A, 1/mm
-    double psi_ = 0;        //!< rad
-    double k_ = 0;          //!< rad per unit s
-    double inv_k_ = 0;      //!< unit s per rad
-    double q_ulp_ = 0;      //!< mm, a rounding of q: where the fixed point has converged
-    double slack_ = 0;      //!< unit s, how far outside [lo, hi] a rounding may put the answer
-    double branch_base_ = 0;   //!< rad, n pi (even n) or (n + 1) pi (odd n)
-    double branch_sign_ = 1;   //!< +1 on a falling branch of the cosine, -1 on a rising one
-    double s_middle_ = 0;      //!< unit s, the middle of the interval: the fixed point's start
+    double psi_ = 0;            //!< rad
+    double k_ = 0;              //!< rad per unit s
+    double inv_k_ = 0;          //!< unit s per rad
+    double q_ulp_ = 0;          //!< mm, a rounding of q: where the fixed point has converged
+    double slack_ = 0;          //!< unit s, how far outside [lo, hi] a rounding may put the answer
+    double branch_base_ = 0;    //!< rad, n pi (even n) or (n + 1) pi (odd n)
+    double branch_sign_ = 1;    //!< +1 on a falling branch of the cosine, -1 on a rising one
+    double s_middle_ = 0;       //!< unit s, the middle of the interval: the fixed point's start
 };
 
 }  // namespace nckit::drive_detail

@@ -42,21 +42,24 @@ TimerSetting IntervalTimer::setting_for(double wanted_hz) const {
 
 std::string TimerSetting::message() const {
     switch (status) {
-    case TimerStatus::ok:
-        return fmt::format("{} steps/s: divisor {} gives {} steps/s ({:+.6g} %)", wanted_hz,
-                           divisor, rate_hz, speed_error * 100.0);
-    case TimerStatus::too_fast:
-        return fmt::format("{} steps/s is faster than the timer can step: it makes {} to {} "
-                           "steps/s", wanted_hz, min_rate_hz, max_rate_hz);
-    case TimerStatus::too_slow:
-        return fmt::format("{} steps/s is slower than the timer can step: it makes {} to {} "
-                           "steps/s (a slower rate needs a prescaler or a slower clock)",
-                           wanted_hz, min_rate_hz, max_rate_hz);
-    case TimerStatus::invalid_rate:
-        break;
+        case TimerStatus::ok:
+            return fmt::format("{} steps/s: divisor {} gives {} steps/s ({:+.6g} %)", wanted_hz, divisor, rate_hz,
+                               speed_error * 100.0);
+        case TimerStatus::too_fast:
+            return fmt::format(
+                "{} steps/s is faster than the timer can step: it makes {} to {} "
+                "steps/s",
+                wanted_hz, min_rate_hz, max_rate_hz);
+        case TimerStatus::too_slow:
+            return fmt::format(
+                "{} steps/s is slower than the timer can step: it makes {} to {} "
+                "steps/s (a slower rate needs a prescaler or a slower clock)",
+                wanted_hz, min_rate_hz, max_rate_hz);
+        case TimerStatus::invalid_rate:
+            break;
     }
-    return fmt::format("{} steps/s is not a step rate: the timer makes {} to {} steps/s",
-                       wanted_hz, min_rate_hz, max_rate_hz);
+    return fmt::format("{} steps/s is not a step rate: the timer makes {} to {} steps/s", wanted_hz, min_rate_hz,
+                       max_rate_hz);
 }
 
 }  // namespace nckit::drive

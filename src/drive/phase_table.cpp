@@ -13,8 +13,7 @@ constexpr std::array<std::uint8_t, 6> three_phase_six_beat{A3, A3 | B3, B3, B3 |
 constexpr std::array<std::uint8_t, 3> three_phase_three_beat{A3, B3, C3};
 constexpr std::uint8_t A4 = 0b1000, B4 = 0b0100, C4 = 0b0010, D4 = 0b0001;
 constexpr std::array<std::uint8_t, 4> two_phase_full{A4 | B4, B4 | C4, C4 | D4, D4 | A4};
-constexpr std::array<std::uint8_t, 8> two_phase_half{A4, A4 | B4, B4, B4 | C4,
-                                                     C4, C4 | D4, D4, D4 | A4};
+constexpr std::array<std::uint8_t, 8> two_phase_half{A4, A4 | B4, B4, B4 | C4, C4, C4 | D4, D4, D4 | A4};
 
 }  // namespace
 
@@ -30,22 +29,30 @@ std::optional<PhaseTableKind> parse_phase_table(std::string_view text) {
 
 std::span<const std::uint8_t> phase_patterns(PhaseTableKind kind) {
     switch (kind) {
-    case PhaseTableKind::none: return {};
-    case PhaseTableKind::three_phase_six_beat: return three_phase_six_beat;
-    case PhaseTableKind::three_phase_three_beat: return three_phase_three_beat;
-    case PhaseTableKind::two_phase_full_step: return two_phase_full;
-    case PhaseTableKind::two_phase_half_step: return two_phase_half;
+        case PhaseTableKind::none:
+            return {};
+        case PhaseTableKind::three_phase_six_beat:
+            return three_phase_six_beat;
+        case PhaseTableKind::three_phase_three_beat:
+            return three_phase_three_beat;
+        case PhaseTableKind::two_phase_full_step:
+            return two_phase_full;
+        case PhaseTableKind::two_phase_half_step:
+            return two_phase_half;
     }
     return {};
 }
 
 int winding_count(PhaseTableKind kind) {
     switch (kind) {
-    case PhaseTableKind::none: return 0;
-    case PhaseTableKind::three_phase_six_beat:
-    case PhaseTableKind::three_phase_three_beat: return 3;
-    case PhaseTableKind::two_phase_full_step:
-    case PhaseTableKind::two_phase_half_step: return 4;
+        case PhaseTableKind::none:
+            return 0;
+        case PhaseTableKind::three_phase_six_beat:
+        case PhaseTableKind::three_phase_three_beat:
+            return 3;
+        case PhaseTableKind::two_phase_full_step:
+        case PhaseTableKind::two_phase_half_step:
+            return 4;
     }
     return 0;
 }

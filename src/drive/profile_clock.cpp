@@ -31,9 +31,8 @@ void ProfileClock::enter(int phase, double start_s, double p, double v) {
     inv_v_ = v > 0 ? 1.0 / v : 0.0;
     half_a_ = 0.5 * a_;
     sixth_j_ = j_ / 6.0;
-    end_p_ = phase + 1 == profile_.phase_count
-                 ? profile_.distance
-                 : p + duration_ * (v + duration_ * (0.5 * a_ + duration_ * j_ / 6.0));
+    end_p_ = phase + 1 == profile_.phase_count ? profile_.distance
+                                               : p + duration_ * (v + duration_ * (0.5 * a_ + duration_ * j_ / 6.0));
     if (j_ == 0 && a_ == 0) {
         shape_ = Shape::cruise;
     } else if (j_ == 0 && solver_ == PhaseSolver::closed_form) {

@@ -49,15 +49,15 @@ private:
     PhaseSolver solver_;
     Shape shape_ = Shape::cruise;
     int phase_ = 0;
-    double start_s_ = 0;   //!< s, profile time at the phase start
-    double duration_ = 0;  //!< s
+    double start_s_ = 0;                    //!< s, profile time at the phase start
+    double duration_ = 0;                   //!< s
     double p_ = 0, v_ = 0, a_ = 0, j_ = 0;  //!< state at the phase start (p relative to the profile)
-    double end_p_ = 0;     //!< mm at the phase end
-    double inv_v_ = 0;     //!< s/mm at the phase start (cruise phases)
-    double half_a_ = 0, sixth_j_ = 0;  //!< the cubic's coefficients a/2, j/6
-    double guess_ = 0;     //!< s into the phase: the last root, a good start for the next
-    double last_gap_ = 0;  //!< s between the last two roots
-    bool have_root_ = false;  //!< guess_ is a root in this phase, at position last_p_
+    double end_p_ = 0;                      //!< mm at the phase end
+    double inv_v_ = 0;                      //!< s/mm at the phase start (cruise phases)
+    double half_a_ = 0, sixth_j_ = 0;       //!< the cubic's coefficients a/2, j/6
+    double guess_ = 0;                      //!< s into the phase: the last root, a good start for the next
+    double last_gap_ = 0;                   //!< s between the last two roots
+    bool have_root_ = false;                //!< guess_ is a root in this phase, at position last_p_
     double last_p_ = 0;
 };
 

@@ -66,8 +66,7 @@ Matrix2 transition_matrix(double omega, double zeta, double h) {
 
 }  // namespace
 
-ServoParameters ServoParameters::from_natural_frequency(double gain, double natural_frequency_hz,
-                                                        double damping) {
+ServoParameters ServoParameters::from_natural_frequency(double gain, double natural_frequency_hz, double damping) {
     if (!(natural_frequency_hz > 0.0) || !std::isfinite(natural_frequency_hz)) {
         throw std::invalid_argument("servo natural frequency must be positive and finite");
     }
@@ -82,10 +81,8 @@ std::complex<double> frequency_response(const ServoParameters& p, double omega_r
 ServoDiscretisation discretise(const ServoParameters& parameters, double period_s) {
     const bool finite = std::isfinite(parameters.gain) && std::isfinite(parameters.damping) &&
                         std::isfinite(parameters.time_constant_s) && std::isfinite(period_s);
-    if (!finite || parameters.time_constant_s <= 0.0 || parameters.damping < 0.0 ||
-        period_s <= 0.0) {
-        throw std::invalid_argument(
-            "servo model needs finite gain, time constant > 0, damping >= 0 and period > 0");
+    if (!finite || parameters.time_constant_s <= 0.0 || parameters.damping < 0.0 || period_s <= 0.0) {
+        throw std::invalid_argument("servo model needs finite gain, time constant > 0, damping >= 0 and period > 0");
     }
     ServoDiscretisation d;
     d.period_s = period_s;
@@ -106,7 +103,7 @@ ServoModel::ServoModel(const ServoParameters& parameters, double period_s, Servo
 }
 
 ServoState ServoModel::step(double setpoint) {
-    detail::step_held(phi_, parameters_.gain * setpoint, target_, deviation_, state_);
+    drive_detail::step_held(phi_, parameters_.gain * setpoint, target_, deviation_, state_);
     setpoint_ = setpoint;
     return state_;
 }

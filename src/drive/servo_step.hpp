@@ -5,7 +5,7 @@
 
 #include "nckit/drive/servo_model.hpp"
 
-namespace nckit::drive::detail {
+namespace nckit::drive_detail {
 
 //! Holds gain × setpoint = `target` for one period with transition `phi`. The state is kept as
 //! the deviation from the held target, re-referenced only when the target moves: between
@@ -21,4 +21,4 @@ inline void step_held(const std::array<std::array<double, 2>, 2>& phi, double ta
     state.velocity = phi[1][0] * e + phi[1][1] * v;
 }
 
-}  // namespace nckit::drive::detail
+}  // namespace nckit::drive_detail

@@ -20,7 +20,9 @@ using drive_detail::ProfileClock;
 namespace {
 
 // ns from s, for t >= 0 (rounded half up, as llround would for these values).
-std::int64_t to_ns(double t_s) { return static_cast<std::int64_t>(t_s * 1e9 + 0.5); }
+std::int64_t to_ns(double t_s) {
+    return static_cast<std::int64_t>(t_s * 1e9 + 0.5);
+}
 
 }  // namespace
 
@@ -163,8 +165,8 @@ void StepGenerator::add(const TrajectoryPiece& piece) {
             axis.started = true;
         }
         // An axis off the circle (a helix's axis, UVW, ABC) moves linearly along the piece.
-        const bool curved = i < 3 && ((g.radius_mm > 0 && (g.u[i] != 0 || g.v[i] != 0)) ||
-                                      g.shape == SegmentShape::quintic);
+        const bool curved =
+            i < 3 && ((g.radius_mm > 0 && (g.u[i] != 0 || g.v[i] != 0)) || g.shape == SegmentShape::quintic);
         if (!curved && g.rate[i] == 0) {
             // The axis does not move along this piece; a rounding step between pieces goes at
             // the piece start.
@@ -185,11 +187,12 @@ void StepGenerator::add(const TrajectoryPiece& piece) {
             const double inv_rate = 1.0 / g.rate[i];
             const Interval whole{0.0, g.length, position_at(g, 0.0)[i] * spu, position_at(g, g.length)[i] * spu,
                                  g.rate[i] > 0 ? 1 : -1};
-            walk(axis, index, whole,
-                 [&](double boundary, double) {
-                     return std::clamp((boundary * inv_spu - g.origin[i]) * inv_rate, 0.0, g.length);
-                 },
-                 time_ns);
+            walk(
+                axis, index, whole,
+                [&](double boundary, double) {
+                    return std::clamp((boundary * inv_spu - g.origin[i]) * inv_rate, 0.0, g.length);
+                },
+                time_ns);
             continue;
         }
         // Monotone intervals of q_i(s), split at its turning points.
@@ -207,18 +210,19 @@ void StepGenerator::add(const TrajectoryPiece& piece) {
             const double x_b = position_at(g, s_b)[i] * spu;
             const Interval interval{s_a, s_b, x_a, x_b, x_b >= x_a ? 1 : -1};
             if (closed_form) arc.set_interval(s_a, s_b);
-            walk(axis, index, interval,
-                 [&](double boundary, double lo) {
-                     double s = closed_form ? arc.crossing(boundary * inv_spu, lo, s_b) : -1.0;
-                     if (s < 0) {
-                         const double guess = last_s > s_a ? last_s + last_gap : lo + 0.5 * (s_b - lo);
-                         s = drive_detail::arc_crossing_newton(g, i, spu, boundary, lo, s_b, interval.rising, guess);
-                     }
-                     last_gap = s - last_s;
-                     last_s = s;
-                     return s;
-                 },
-                 time_ns);
+            walk(
+                axis, index, interval,
+                [&](double boundary, double lo) {
+                    double s = closed_form ? arc.crossing(boundary * inv_spu, lo, s_b) : -1.0;
+                    if (s < 0) {
+                        const double guess = last_s > s_a ? last_s + last_gap : lo + 0.5 * (s_b - lo);
+                        s = drive_detail::arc_crossing_newton(g, i, spu, boundary, lo, s_b, interval.rising, guess);
+                    }
+                    last_gap = s - last_s;
+                    last_s = s;
+                    return s;
+                },
+                time_ns);
             x_a = x_b;
         }
     }

@@ -34,7 +34,8 @@ void StepQueue::flush(std::size_t axis_index, std::vector<StepQueueCommand>& out
     Axis& axis = axes_[axis_index];
     if (axis.pending_ns.empty()) return;
     for (const StepRun& run : compress_steps(axis.pending_ns, axis.t_prev_ns, max_error_ns_)) {
-        out.push_back(StepQueueCommand{.kind = StepQueueCommand::Kind::queue_step, .axis = axis_index, .direction = 0, .run = run});
+        out.push_back(StepQueueCommand{
+            .kind = StepQueueCommand::Kind::queue_step, .axis = axis_index, .direction = 0, .run = run});
         ++runs_;
     }
     axis.pending_ns.clear();

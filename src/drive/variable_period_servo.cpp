@@ -28,7 +28,8 @@ const ServoDiscretisation& VariablePeriodServo::discretisation(double period_s) 
 }
 
 ServoState VariablePeriodServo::step(double setpoint, double period_s) {
-    detail::step_held(discretisation(period_s).transition, parameters_.gain * setpoint, target_, deviation_, state_);
+    drive_detail::step_held(discretisation(period_s).transition, parameters_.gain * setpoint, target_, deviation_,
+                            state_);
     return state_;
 }
 

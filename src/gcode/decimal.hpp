@@ -11,9 +11,8 @@ namespace nckit::gcode {
 [[nodiscard]] inline std::optional<double> parse_decimal(const char* digits, std::size_t n) {
     // Clinger's fast path: an integer mantissa below 2^53 divided by an exact power of ten is
     // one correctly rounded IEEE operation.
-    static constexpr double powers_of_ten[] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10,
-                                               1e11, 1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20,
-                                               1e21, 1e22};
+    static constexpr double powers_of_ten[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
+                                               1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
     std::uint64_t mantissa = 0;
     int significant = 0;
     int fraction_digits = 0;

@@ -13,9 +13,15 @@ namespace nckit::gcode {
 
 namespace {
 
-bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
-bool is_digit(char c) { return c >= '0' && c <= '9'; }
-char upper(char c) { return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c; }
+bool is_blank(char c) {
+    return c == ' ' || c == '\t' || c == '\r';
+}
+bool is_digit(char c) {
+    return c >= '0' && c <= '9';
+}
+char upper(char c) {
+    return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c;
+}
 
 constexpr int max_bracket_depth = 5;
 
@@ -29,14 +35,22 @@ struct FunctionName {
 // Full names are tried before any abbreviation, so `SI` never shadows `SQRT`. POW has no
 // abbreviation (Fanuc accepts none for it).
 constexpr std::array<FunctionName, 17> functions{{
-    {"ASIN", "AS", ExprFunction::asin, 1}, {"ACOS", "AC", ExprFunction::acos, 1},
-    {"ATAN", "AT", ExprFunction::atan, 1}, {"SIN", "SI", ExprFunction::sin, 1},
-    {"COS", "CO", ExprFunction::cos, 1},   {"TAN", "TA", ExprFunction::tan, 1},
-    {"SQRT", "SQ", ExprFunction::sqrt, 1}, {"ABS", "AB", ExprFunction::abs, 1},
-    {"ROUND", "RO", ExprFunction::round, 1}, {"FIX", "FI", ExprFunction::fix, 1},
-    {"FUP", "FU", ExprFunction::fup, 1},   {"LN", "", ExprFunction::ln, 1},
-    {"EXP", "EX", ExprFunction::exp, 1},   {"POW", "", ExprFunction::pow, 2},
-    {"ADP", "AD", ExprFunction::adp, 1},   {"BIN", "BI", ExprFunction::bin, 1},
+    {"ASIN", "AS", ExprFunction::asin, 1},
+    {"ACOS", "AC", ExprFunction::acos, 1},
+    {"ATAN", "AT", ExprFunction::atan, 1},
+    {"SIN", "SI", ExprFunction::sin, 1},
+    {"COS", "CO", ExprFunction::cos, 1},
+    {"TAN", "TA", ExprFunction::tan, 1},
+    {"SQRT", "SQ", ExprFunction::sqrt, 1},
+    {"ABS", "AB", ExprFunction::abs, 1},
+    {"ROUND", "RO", ExprFunction::round, 1},
+    {"FIX", "FI", ExprFunction::fix, 1},
+    {"FUP", "FU", ExprFunction::fup, 1},
+    {"LN", "", ExprFunction::ln, 1},
+    {"EXP", "EX", ExprFunction::exp, 1},
+    {"POW", "", ExprFunction::pow, 2},
+    {"ADP", "AD", ExprFunction::adp, 1},
+    {"BIN", "BI", ExprFunction::bin, 1},
     {"BCD", "BC", ExprFunction::bcd, 1},
 }};
 
@@ -54,7 +68,9 @@ bool accept_abbreviation(Cursor& cursor, std::string_view abbreviation, Next nex
     return true;
 }
 
-bool starts_number(char c) { return is_digit(c) || c == '#' || c == '[' || c == '.'; }
+bool starts_number(char c) {
+    return is_digit(c) || c == '#' || c == '[' || c == '.';
+}
 
 //! Recursive descent over Fanuc's precedence: functions and brackets; * / AND MOD; + - OR XOR;
 //! comparisons.
@@ -65,8 +81,12 @@ public:
     std::optional<Diagnostic> comparison(std::int32_t& out) {
         if (auto e = sum(out)) return e;
         static constexpr std::array<std::pair<std::string_view, ExprOp>, 6> ops{{
-            {"EQ", ExprOp::eq}, {"NE", ExprOp::ne}, {"GT", ExprOp::gt},
-            {"GE", ExprOp::ge}, {"LT", ExprOp::lt}, {"LE", ExprOp::le},
+            {"EQ", ExprOp::eq},
+            {"NE", ExprOp::ne},
+            {"GT", ExprOp::gt},
+            {"GE", ExprOp::ge},
+            {"LT", ExprOp::lt},
+            {"LE", ExprOp::le},
         }};
         for (const auto& [name, op] : ops) {
             std::uint32_t column = (c_.skip_blanks(), c_.column());
@@ -387,7 +407,8 @@ std::optional<Diagnostic> parse_statement(Cursor& cursor, Block& block) {
         s.kind = StatementKind::while_do;
         if (cursor.peek() != '[') return parser.format_error(cursor.column(), "'[' expected after WHILE");
         if (auto e = parser.comparison(s.condition)) return e;
-        if (!cursor.accept_keyword("DO")) return parser.format_error(cursor.column(), "DO expected after WHILE [condition]");
+        if (!cursor.accept_keyword("DO"))
+            return parser.format_error(cursor.column(), "DO expected after WHILE [condition]");
         return loop_number(cursor, block, s.loop);
     }
     if (cursor.accept_keyword("DO")) {

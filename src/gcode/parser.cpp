@@ -12,10 +12,18 @@ namespace nckit {
 
 namespace {
 
-bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
-bool is_digit(char c) { return c >= '0' && c <= '9'; }
-bool is_letter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
-char upper(char c) { return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c; }
+bool is_blank(char c) {
+    return c == ' ' || c == '\t' || c == '\r';
+}
+bool is_digit(char c) {
+    return c >= '0' && c <= '9';
+}
+bool is_letter(char c) {
+    return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z');
+}
+char upper(char c) {
+    return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c;
+}
 
 //! A cursor over one line that skips the blanks the syntax allows anywhere.
 class LineParser {
@@ -204,8 +212,7 @@ private:
             digits[n++] = c;
         }
         if (!any_digit) {
-            return error(word.column, "syntax",
-                         fmt::format("address {} has no number after it", word.letter));
+            return error(word.column, "syntax", fmt::format("address {} has no number after it", word.letter));
         }
         std::optional<double> value = gcode::parse_decimal(digits, n);
         if (!value) return error(word.column, "syntax", "number out of range");
@@ -218,8 +225,8 @@ private:
     //! nothing consumed) when the number needs the general path: blanks inside, many digits,
     //! no digits, or a second point.
     bool parse_plain_number(Word& word) {
-        static constexpr double powers_of_ten[] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12,
-                                                   1e13, 1e14, 1e15};
+        static constexpr double powers_of_ten[] = {1e0, 1e1, 1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                                   1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
         std::size_t p = pos_;
         bool negative = false;
         if (p < line_.size() && (line_[p] == '-' || line_[p] == '+')) negative = line_[p++] == '-';

@@ -14,7 +14,7 @@ namespace nckit {
 namespace {
 constexpr std::size_t buffer_bytes = 1 << 20;
 constexpr std::string_view utf8_bom = "\xEF\xBB\xBF";
-}
+}  // namespace
 
 Result<ProgramSource> ProgramSource::open(const std::filesystem::path& path) {
     ProgramSource source;
@@ -56,7 +56,9 @@ ProgramSource ProgramSource::from_string(std::string text, std::string name) {
     return source;
 }
 
-ProgramSource::ProgramSource(ProgramSource&& other) noexcept { *this = std::move(other); }
+ProgramSource::ProgramSource(ProgramSource&& other) noexcept {
+    *this = std::move(other);
+}
 
 ProgramSource& ProgramSource::operator=(ProgramSource&& other) noexcept {
     if (this != &other) {

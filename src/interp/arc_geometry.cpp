@@ -14,9 +14,12 @@ constexpr double same_point_mm = 1e-9;
 
 PlaneAxes plane_axes(Plane plane) {
     switch (plane) {
-        case Plane::xy: return {Axis::X, Axis::Y, Axis::Z};
-        case Plane::zx: return {Axis::Z, Axis::X, Axis::Y};
-        case Plane::yz: return {Axis::Y, Axis::Z, Axis::X};
+        case Plane::xy:
+            return {Axis::X, Axis::Y, Axis::Z};
+        case Plane::zx:
+            return {Axis::Z, Axis::X, Axis::Y};
+        case Plane::yz:
+            return {Axis::Y, Axis::Z, Axis::X};
     }
     return {Axis::X, Axis::Y, Axis::Z};
 }

@@ -11,8 +11,9 @@ namespace {
 
 constexpr double largest_code_number = 99999999;
 
-std::string g_name(GCode code, GCodeSystem system) { return lathe_code_name(system, code); }
-
+std::string g_name(GCode code, GCodeSystem system) {
+    return lathe_code_name(system, code);
+}
 
 //! M7 and M8 may run together (mist and flood); any other pair of one group conflicts.
 bool m_conflict(int a, int b) {
@@ -27,43 +28,119 @@ bool m_conflict(int a, int b) {
 
 MGroup m_group_of(int code) {
     switch (code) {
-        case 0: case 1: case 2: case 30: case 60: return MGroup::stopping;
-        case 6: return MGroup::tool_change;
-        case 3: case 4: case 5: return MGroup::spindle;
-        case 7: case 8: case 9: return MGroup::coolant;
-        default: return MGroup::other;
+        case 0:
+        case 1:
+        case 2:
+        case 30:
+        case 60:
+            return MGroup::stopping;
+        case 6:
+            return MGroup::tool_change;
+        case 3:
+        case 4:
+        case 5:
+            return MGroup::spindle;
+        case 7:
+        case 8:
+        case 9:
+            return MGroup::coolant;
+        default:
+            return MGroup::other;
     }
 }
 
 std::optional<ModalGroup> group_of(GCode code) {
     switch (code) {
-        case g(4): case g(10): case g(28): case g(30): case g(31): case g(50): case g(52): case g(53):
-        case g(92): case g(92, 1):
+        case g(4):
+        case g(10):
+        case g(28):
+        case g(30):
+        case g(31):
+        case g(50):
+        case g(52):
+        case g(53):
+        case g(92):
+        case g(92, 1):
             return ModalGroup::non_modal;
-        case g(9): return ModalGroup::exact_stop;
-        case g(0): case g(1): case g(2): case g(3): case g(32): case g(33): case g(80):
-        case g(73): case g(74): case g(76): case g(81): case g(82): case g(83): case g(84):
-        case g(85): case g(86): case g(87): case g(88): case g(89):
+        case g(9):
+            return ModalGroup::exact_stop;
+        case g(0):
+        case g(1):
+        case g(2):
+        case g(3):
+        case g(32):
+        case g(33):
+        case g(80):
+        case g(73):
+        case g(74):
+        case g(76):
+        case g(81):
+        case g(82):
+        case g(83):
+        case g(84):
+        case g(85):
+        case g(86):
+        case g(87):
+        case g(88):
+        case g(89):
             return ModalGroup::motion;
-        case g(17): case g(18): case g(19): return ModalGroup::plane;
-        case g(90): case g(91): return ModalGroup::distance;
-        case g(94): case g(95): return ModalGroup::feed_mode;
-        case g(20): case g(21): return ModalGroup::units;
-        case g(40): case g(41): case g(42): case g(41, 1): case g(42, 1): return ModalGroup::cutter_comp;
-        case g(43): case g(44): case g(43, 1): case g(49): return ModalGroup::length_comp;
-        case g(98): case g(99): return ModalGroup::return_mode;
-        case g(90, 1): case g(91, 1): return ModalGroup::arc_distance;
-        case g(96): case g(97): return ModalGroup::spindle_mode;
-        case g(54): case g(55): case g(56): case g(57): case g(58): case g(59):
+        case g(17):
+        case g(18):
+        case g(19):
+            return ModalGroup::plane;
+        case g(90):
+        case g(91):
+            return ModalGroup::distance;
+        case g(94):
+        case g(95):
+            return ModalGroup::feed_mode;
+        case g(20):
+        case g(21):
+            return ModalGroup::units;
+        case g(40):
+        case g(41):
+        case g(42):
+        case g(41, 1):
+        case g(42, 1):
+            return ModalGroup::cutter_comp;
+        case g(43):
+        case g(44):
+        case g(43, 1):
+        case g(49):
+            return ModalGroup::length_comp;
+        case g(98):
+        case g(99):
+            return ModalGroup::return_mode;
+        case g(90, 1):
+        case g(91, 1):
+            return ModalGroup::arc_distance;
+        case g(96):
+        case g(97):
+            return ModalGroup::spindle_mode;
+        case g(54):
+        case g(55):
+        case g(56):
+        case g(57):
+        case g(58):
+        case g(59):
             return ModalGroup::work_system;
-        case g(61): case g(64): return ModalGroup::path_control;
-        case g(7): case g(8): return ModalGroup::diameter;
-        case g(51): return ModalGroup::scaling;
-        case g(50, 1): case g(51, 1): return ModalGroup::mirror;
-        case g(68): case g(69): return ModalGroup::rotation;
+        case g(61):
+        case g(64):
+            return ModalGroup::path_control;
+        case g(7):
+        case g(8):
+            return ModalGroup::diameter;
+        case g(51):
+            return ModalGroup::scaling;
+        case g(50, 1):
+        case g(51, 1):
+            return ModalGroup::mirror;
+        case g(68):
+        case g(69):
+            return ModalGroup::rotation;
         default:
-            if (is_lathe_single_cycle(code)) return ModalGroup::motion;          // modal, as G1
-            if (is_lathe_repetitive_cycle(code)) return ModalGroup::non_modal;   // one block
+            if (is_lathe_single_cycle(code)) return ModalGroup::motion;         // modal, as G1
+            if (is_lathe_repetitive_cycle(code)) return ModalGroup::non_modal;  // one block
             return std::nullopt;
     }
 }
@@ -89,8 +166,9 @@ std::optional<Diagnostic> collect_words(const Block& block, BlockWords& out, GCo
         auto at = [&] { return block.at_column(word.column); };
         bool code_letter = word.letter == 'M' || word.letter == 'N' || word.letter == 'O' || word.letter == 'T';
         if (code_letter && !is_code_number(word.value)) {
-            return error_at(at(), "bad-value", fmt::format("{} must be a whole number from 0 to {}", word.letter,
-                                                           static_cast<long>(largest_code_number)));
+            return error_at(at(), "bad-value",
+                            fmt::format("{} must be a whole number from 0 to {}", word.letter,
+                                        static_cast<long>(largest_code_number)));
         }
         if (word.letter == 'G') {
             if (word.value < 0 || word.value >= 1000) {
@@ -106,8 +184,7 @@ std::optional<Diagnostic> collect_words(const Block& block, BlockWords& out, GCo
             code = read.code;
             auto group = group_of(code);
             if (!group) {
-                return error_at(at(), "unsupported-gcode",
-                                fmt::format("{} is not supported", g_name(code, system)));
+                return error_at(at(), "unsupported-gcode", fmt::format("{} is not supported", g_name(code, system)));
             }
             GWord& slot = out.gcodes[static_cast<std::size_t>(*group)];
             // G80 beside a motion code (`G0 G80 Z50`, as CAM posts write it) cancels the cycle
@@ -118,8 +195,8 @@ std::optional<Diagnostic> collect_words(const Block& block, BlockWords& out, GCo
             }
             if (slot.code >= 0) {
                 return error_at(at(), "modal-conflict",
-                                fmt::format("{} and {} are in the same modal group",
-                                            g_name(slot.code, system), g_name(code, system)));
+                                fmt::format("{} and {} are in the same modal group", g_name(slot.code, system),
+                                            g_name(code, system)));
             }
             slot = GWord{code, word.column};
         } else if (word.letter == 'M') {
@@ -127,8 +204,7 @@ std::optional<Diagnostic> collect_words(const Block& block, BlockWords& out, GCo
             for (std::size_t i = 0; i < out.mcode_count; ++i) {
                 if (m_conflict(out.mcodes[i].code, code)) {
                     return error_at(at(), "modal-conflict",
-                                    fmt::format("M{} and M{} cannot be in one block",
-                                                out.mcodes[i].code, code));
+                                    fmt::format("M{} and M{} cannot be in one block", out.mcodes[i].code, code));
                 }
             }
             if (out.mcode_count == out.mcodes.size()) {
@@ -141,12 +217,11 @@ std::optional<Diagnostic> collect_words(const Block& block, BlockWords& out, GCo
             const Word*& slot = out.letters[reads_as - 'A'];
             if (slot != nullptr) {
                 if (slot->letter != word.letter) {
-                    return error_at(at(), "duplicate-word",
-                                    fmt::format("{} and {} both give {} in one block", slot->letter, word.letter,
-                                                reads_as));
+                    return error_at(
+                        at(), "duplicate-word",
+                        fmt::format("{} and {} both give {} in one block", slot->letter, word.letter, reads_as));
                 }
-                return error_at(at(), "duplicate-word",
-                                fmt::format("{} appears twice in one block", word.letter));
+                return error_at(at(), "duplicate-word", fmt::format("{} appears twice in one block", word.letter));
             }
             slot = &word;
             out.incremental_letter[reads_as - 'A'] = reads_as != word.letter;

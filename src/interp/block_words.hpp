@@ -13,27 +13,29 @@ namespace nckit::interp {
 
 //! A G code as ten times its number, so G92.1 is 921 and G1 is 10.
 using GCode = int;
-constexpr GCode g(int major, int minor = 0) { return major * 10 + minor; }
+constexpr GCode g(int major, int minor = 0) {
+    return major * 10 + minor;
+}
 
 enum class ModalGroup {
-    non_modal,      // G4 G10 G28 G30 G31 G50 G52 G53 G92 G92.1
-    exact_stop,     // G9
-    motion,         // G0 G1 G2 G3 G32 G33 G80, drilling cycles G73 G74 G76 G81-G89
-    plane,          // G17 G18 G19
-    distance,       // G90 G91
-    feed_mode,      // G94 G95
-    units,          // G20 G21
-    cutter_comp,    // G40 G41 G42 G41.1 G42.1
-    length_comp,    // G43 G44 G43.1 G49
-    spindle_mode,   // G96 G97
-    work_system,    // G54..G59
-    path_control,   // G61 G64
-    diameter,       // G7 G8
-    scaling,        // G51 (G50 alone cancels it: see program_transform.hpp)
-    mirror,         // G50.1 G51.1
-    rotation,       // G68 G69
-    return_mode,    // G98 G99: where a drilling cycle returns
-    arc_distance,   // G90.1 G91.1: I J K absolute or incremental
+    non_modal,     // G4 G10 G28 G30 G31 G50 G52 G53 G92 G92.1
+    exact_stop,    // G9
+    motion,        // G0 G1 G2 G3 G32 G33 G80, drilling cycles G73 G74 G76 G81-G89
+    plane,         // G17 G18 G19
+    distance,      // G90 G91
+    feed_mode,     // G94 G95
+    units,         // G20 G21
+    cutter_comp,   // G40 G41 G42 G41.1 G42.1
+    length_comp,   // G43 G44 G43.1 G49
+    spindle_mode,  // G96 G97
+    work_system,   // G54..G59
+    path_control,  // G61 G64
+    diameter,      // G7 G8
+    scaling,       // G51 (G50 alone cancels it: see program_transform.hpp)
+    mirror,        // G50.1 G51.1
+    rotation,      // G68 G69
+    return_mode,   // G98 G99: where a drilling cycle returns
+    arc_distance,  // G90.1 G91.1: I J K absolute or incremental
     count
 };
 constexpr std::size_t group_count = static_cast<std::size_t>(ModalGroup::count);
@@ -51,15 +53,13 @@ struct MWord {
 };
 
 struct BlockWords {
-    std::array<GWord, group_count> gcodes{};   //!< code -1 where the group is absent
-    std::array<MWord, 5> mcodes{};             //!< in the order written
+    std::array<GWord, group_count> gcodes{};  //!< code -1 where the group is absent
+    std::array<MWord, 5> mcodes{};            //!< in the order written
     std::size_t mcode_count = 0;
-    std::array<const Word*, 26> letters{};     //!< every other letter; null where absent
+    std::array<const Word*, 26> letters{};  //!< every other letter; null where absent
 
     [[nodiscard]] GCode group(ModalGroup g) const { return gcodes[static_cast<std::size_t>(g)].code; }
-    [[nodiscard]] std::uint32_t group_column(ModalGroup g) const {
-        return gcodes[static_cast<std::size_t>(g)].column;
-    }
+    [[nodiscard]] std::uint32_t group_column(ModalGroup g) const { return gcodes[static_cast<std::size_t>(g)].column; }
     //! Lathe G-code system A: U and W are incremental X and Z, kept under X and Z with this flag.
     std::array<bool, 26> incremental_letter{};
 

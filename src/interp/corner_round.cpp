@@ -24,27 +24,43 @@ namespace nckit::interp {
 namespace {
 
 constexpr double pi = std::numbers::pi;
-constexpr double length_eps_mm = 1e-6;   // a corner piece may use a move up to its whole length
-constexpr double angle_eps_rad = 1e-6;   // straight on / straight back
+constexpr double length_eps_mm = 1e-6;  // a corner piece may use a move up to its whole length
+constexpr double angle_eps_rad = 1e-6;  // straight on / straight back
 
 struct P2 {
     double u = 0;
     double v = 0;
 };
-P2 operator+(P2 a, P2 b) { return {a.u + b.u, a.v + b.v}; }
-P2 operator-(P2 a, P2 b) { return {a.u - b.u, a.v - b.v}; }
-P2 operator*(P2 a, double k) { return {a.u * k, a.v * k}; }
-double dot(P2 a, P2 b) { return a.u * b.u + a.v * b.v; }
-double cross(P2 a, P2 b) { return a.u * b.v - a.v * b.u; }
-double norm(P2 a) { return std::hypot(a.u, a.v); }
-P2 left_of(P2 a) { return {-a.v, a.u}; }
+P2 operator+(P2 a, P2 b) {
+    return {a.u + b.u, a.v + b.v};
+}
+P2 operator-(P2 a, P2 b) {
+    return {a.u - b.u, a.v - b.v};
+}
+P2 operator*(P2 a, double k) {
+    return {a.u * k, a.v * k};
+}
+double dot(P2 a, P2 b) {
+    return a.u * b.u + a.v * b.v;
+}
+double cross(P2 a, P2 b) {
+    return a.u * b.v - a.v * b.u;
+}
+double norm(P2 a) {
+    return std::hypot(a.u, a.v);
+}
+P2 left_of(P2 a) {
+    return {-a.v, a.u};
+}
 P2 rotated(P2 a, double angle_rad) {
     const double c = std::cos(angle_rad);
     const double s = std::sin(angle_rad);
     return {a.u * c - a.v * s, a.u * s + a.v * c};
 }
 
-P2 in_plane(const AxisVector& p, const PlaneAxes& axes) { return {p[axes.first], p[axes.second]}; }
+P2 in_plane(const AxisVector& p, const PlaneAxes& axes) {
+    return {p[axes.first], p[axes.second]};
+}
 AxisVector with_plane(AxisVector base, P2 q, const PlaneAxes& axes) {
     base[axes.first] = q.u;
     base[axes.second] = q.v;
@@ -72,10 +88,10 @@ struct Piece {
     bool is_arc = false;
     P2 a, b;
     P2 o;
-    double radius_mm = 0;   //!< at the corner
+    double radius_mm = 0;  //!< at the corner
     bool ccw = false;
-    double length_mm = 0;   //!< segment length, or arc sweep in rad
-    P2 u;                   //!< a segment's unit direction
+    double length_mm = 0;  //!< segment length, or arc sweep in rad
+    P2 u;                  //!< a segment's unit direction
 };
 
 P2 tangent_at(const Piece& piece, P2 x) {
@@ -218,9 +234,10 @@ std::string does_not_fit(CornerKind kind, double size_mm, const Piece& one, cons
         return fmt::format("{} {:.4g} mm does not fit on the moves before and after the corner", what, size_mm);
     }
     const double needed_mm = kind == CornerKind::round ? size_mm * std::tan(phi / 2) : size_mm;
-    return fmt::format("{} {:.4g} mm does not fit: it needs {:.4f} mm of each move, the moves are {:.4f} and "
-                       "{:.4f} mm long",
-                       what, size_mm, needed_mm, one.length_mm, two.length_mm);
+    return fmt::format(
+        "{} {:.4g} mm does not fit: it needs {:.4f} mm of each move, the moves are {:.4f} and "
+        "{:.4f} mm long",
+        what, size_mm, needed_mm, one.length_mm, two.length_mm);
 }
 
 CornerMove shortened(CornerMove move, P2 x, const PlaneAxes& axes, bool first) {
@@ -238,8 +255,8 @@ CornerMove shortened(CornerMove move, P2 x, const PlaneAxes& axes, bool first) {
 
 }  // namespace
 
-std::variant<CornerResult, std::string> make_corner(const CornerMove& first, const CornerMove& next,
-                                                    CornerKind kind, double size_mm, Plane plane) {
+std::variant<CornerResult, std::string> make_corner(const CornerMove& first, const CornerMove& next, CornerKind kind,
+                                                    double size_mm, Plane plane) {
     const PlaneAxes axes = plane_axes(plane);
     auto first_piece = to_piece(first, axes, plane, true);
     if (const std::string* why = std::get_if<std::string>(&first_piece)) return *why;

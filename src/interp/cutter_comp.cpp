@@ -20,7 +20,9 @@ namespace {
 // this while compensation is on has lost its contour.
 constexpr std::size_t max_held = 100000;
 
-Vec2 in_plane(const AxisVector& v, PlaneAxes p) { return {v[p.first], v[p.second]}; }
+Vec2 in_plane(const AxisVector& v, PlaneAxes p) {
+    return {v[p.first], v[p.second]};
+}
 void set_in_plane(AxisVector& v, PlaneAxes p, Vec2 point) {
     v[p.first] = point.x;
     v[p.second] = point.y;
@@ -98,7 +100,8 @@ std::optional<CompError> CutterCompensator::add(Move move, std::vector<Move>& ou
             if (held_.size() >= max_held) {
                 return error(move.where, "cutter-comp",
                              fmt::format("more than {} blocks without a move in the plane while cutter "
-                                         "compensation is on", max_held));
+                                         "compensation is on",
+                                         max_held));
             }
             if (moves_in_plane(move)) return next_planar(std::move(move), out);
             if (is_line) {
@@ -121,7 +124,8 @@ std::optional<CompError> CutterCompensator::start_up(Move move, std::vector<Move
     if (distance <= radius_mm_) {
         return error(move.where, "cutter-comp",
                      fmt::format("the start-up move is {:.4f} mm long in the plane, not longer than the tool "
-                                 "radius {:.4f} mm", distance, radius_mm_));
+                                 "radius {:.4f} mm",
+                                 distance, radius_mm_));
     }
     Vec2 normal = static_cast<double>(side_) * interp::comp::left_normal(interp::comp::unit(to - from));
     set_in_plane(line.to, p, to + radius_mm_ * normal);

@@ -20,7 +20,9 @@ namespace {
 
 constexpr double two_pi = 2.0 * std::numbers::pi;
 
-Vec2 in_plane(const AxisVector& v, PlaneAxes p) { return {v[p.first], v[p.second]}; }
+Vec2 in_plane(const AxisVector& v, PlaneAxes p) {
+    return {v[p.first], v[p.second]};
+}
 void set_in_plane(AxisVector& v, PlaneAxes p, Vec2 point) {
     v[p.first] = point.x;
     v[p.second] = point.y;
@@ -127,14 +129,14 @@ std::optional<CompError> CutterCompensator::next_planar(Move move, std::vector<M
     if (!b_off) {
         return error(move.where, "cutter-gouge",
                      fmt::format("the tool radius {:.4f} mm is not smaller than the radius {:.4f} mm of this arc, "
-                                 "which the tool cuts from inside", radius_mm_,
-                                 interp::comp::length(b.start - b.center)));
+                                 "which the tool cuts from inside",
+                                 radius_mm_, interp::comp::length(b.start - b.center)));
     }
     auto a_off = interp::comp::offset(a, side_, radius_mm_);  // was checked when a came in
     Corner kind = interp::comp::classify(a, b, side_);
     Move& held = held_.front();
-    Vec2 a_end = held.what.index() == 0 ? in_plane(std::get<Line>(held.what).to, p)
-                                        : in_plane(std::get<Arc>(held.what).to, p);
+    Vec2 a_end =
+        held.what.index() == 0 ? in_plane(std::get<Line>(held.what).to, p) : in_plane(std::get<Arc>(held.what).to, p);
     Vec2 b_start = b_off->start;
     bool around = false;
     if (held_start_up_ && startup_ == CompStartup::type_a && kind != Corner::inside) {

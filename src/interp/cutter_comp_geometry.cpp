@@ -92,11 +92,11 @@ std::optional<Vec2> inside_corner(const Segment& a_off, const Segment& b_off, Ve
         return a_off.end + t * da;
     }
     if (!a_off.arc) {
-        count = line_circle(a_off.end, unit(a_off.end - a_off.start), b_off.center,
-                            length(b_off.start - b_off.center), points);
+        count = line_circle(a_off.end, unit(a_off.end - a_off.start), b_off.center, length(b_off.start - b_off.center),
+                            points);
     } else if (!b_off.arc) {
-        count = line_circle(b_off.start, unit(b_off.end - b_off.start), a_off.center,
-                            length(a_off.end - a_off.center), points);
+        count = line_circle(b_off.start, unit(b_off.end - b_off.start), a_off.center, length(a_off.end - a_off.center),
+                            points);
     } else {
         count = circle_circle(a_off.center, length(a_off.end - a_off.center), b_off.center,
                               length(b_off.start - b_off.center), points);

@@ -11,13 +11,27 @@ struct Vec2 {
     double x = 0;
     double y = 0;
 };
-inline Vec2 operator+(Vec2 a, Vec2 b) { return {a.x + b.x, a.y + b.y}; }
-inline Vec2 operator-(Vec2 a, Vec2 b) { return {a.x - b.x, a.y - b.y}; }
-inline Vec2 operator*(double k, Vec2 a) { return {k * a.x, k * a.y}; }
-inline double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
-inline double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
-inline double length(Vec2 a) { return std::hypot(a.x, a.y); }
-inline Vec2 left_normal(Vec2 a) { return {-a.y, a.x}; }
+inline Vec2 operator+(Vec2 a, Vec2 b) {
+    return {a.x + b.x, a.y + b.y};
+}
+inline Vec2 operator-(Vec2 a, Vec2 b) {
+    return {a.x - b.x, a.y - b.y};
+}
+inline Vec2 operator*(double k, Vec2 a) {
+    return {k * a.x, k * a.y};
+}
+inline double dot(Vec2 a, Vec2 b) {
+    return a.x * b.x + a.y * b.y;
+}
+inline double cross(Vec2 a, Vec2 b) {
+    return a.x * b.y - a.y * b.x;
+}
+inline double length(Vec2 a) {
+    return std::hypot(a.x, a.y);
+}
+inline Vec2 left_normal(Vec2 a) {
+    return {-a.y, a.x};
+}
 inline Vec2 unit(Vec2 a) {
     double l = length(a);
     return l > 0 ? (1.0 / l) * a : Vec2{};
@@ -37,7 +51,9 @@ struct Segment {
 [[nodiscard]] Vec2 end_tangent(const Segment& s);
 
 //! side: +1 left (G41), -1 right (G42). An arc is cut from inside when it turns toward the tool.
-[[nodiscard]] inline bool tool_inside(const Segment& arc, int side) { return side * arc.turn > 0; }
+[[nodiscard]] inline bool tool_inside(const Segment& arc, int side) {
+    return side * arc.turn > 0;
+}
 
 //! The segment moved r to `side`: a line shifts along its normal, an arc keeps its centre and
 //! its radius grows or shrinks by r. Nothing when an inside arc's radius is not larger than r.

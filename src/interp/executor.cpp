@@ -51,7 +51,9 @@ void Executor::push(std::vector<Move>& out, decltype(Move::what) what) const {
     out.push_back(Move{std::move(what), block_->location, n});
 }
 
-bool Executor::axis_is_linear(Axis axis) const { return !rotary_[index(axis)]; }
+bool Executor::axis_is_linear(Axis axis) const {
+    return !rotary_[index(axis)];
+}
 
 double Executor::axis_value(Axis axis, const Word& word) const {
     bool linear = axis_is_linear(axis);
@@ -257,19 +259,19 @@ std::optional<Diagnostic> Executor::dwell(std::vector<Move>& out) {
     double seconds = time->value;
     // Fanuc: P is milliseconds (LinuxCNC reads seconds). X is seconds, but an X without a decimal
     // point counts least increments like any X word, and the time increment is 1 ms.
-    bool milliseconds = time->letter == 'P' ||
-                        (!time->has_decimal_point &&
-                         machine_.decimal_point_input == DecimalPointInput::least_increment);
+    bool milliseconds = time->letter == 'P' || (!time->has_decimal_point &&
+                                                machine_.decimal_point_input == DecimalPointInput::least_increment);
     if (milliseconds) seconds /= 1000.0;
     if (seconds < 0) return error(time->column, "bad-value", "dwell time is negative");
     if (time->letter == 'P' && time->has_decimal_point && time->value != std::floor(time->value) &&
         options_.on_warning) {
         // A Fanuc control reads P as a whole count of milliseconds: P1.5 is most likely meant as
         // 1.5 seconds (LinuxCNC's reading), which is X1.5 or P1500.
-        Diagnostic warning = error(time->column, "dwell-decimal",
-                                   fmt::format("G4 P{}: P counts milliseconds, so this dwells {} ms; for {} s "
-                                               "write X{} or P{}", time->value, time->value, time->value,
-                                               time->value, time->value * 1000.0));
+        Diagnostic warning =
+            error(time->column, "dwell-decimal",
+                  fmt::format("G4 P{}: P counts milliseconds, so this dwells {} ms; for {} s "
+                              "write X{} or P{}",
+                              time->value, time->value, time->value, time->value, time->value * 1000.0));
         warning.severity = Severity::warning;
         options_.on_warning(warning);
     }
@@ -303,8 +305,8 @@ std::optional<Diagnostic> Executor::set_coordinates() {
         });
     } else if (code == g(92) || (code == g(50) && block_has_axis_words())) {
         each_axis_word([&](Axis a, double v) {
-            offsets_.g92[a] = position_[a] - offsets_.work[modal_.work_system][a] - offsets_.g52[a] -
-                              modal_.tool_offset[a] - v;
+            offsets_.g92[a] =
+                position_[a] - offsets_.work[modal_.work_system][a] - offsets_.g52[a] - modal_.tool_offset[a] - v;
         });
     } else if (code == g(92, 1)) {
         offsets_.g92 = AxisVector{};

@@ -27,7 +27,8 @@ inline constexpr std::int64_t last_macro_input = 1199;
 
 //! Reads the blocks N p through N q of the running program for the lathe cycles G70-G73, their
 //! expressions evaluated; the error names what was not found. Set by the program runner.
-using SequenceReader = std::function<std::optional<Diagnostic>(std::int64_t p, std::int64_t q, std::vector<Block>& out)>;
+using SequenceReader =
+    std::function<std::optional<Diagnostic>(std::int64_t p, std::int64_t q, std::vector<Block>& out)>;
 
 class Executor {
 public:
@@ -44,8 +45,7 @@ public:
 
     //! Runs `block`: every check first, then its actions in RS-274 order. On an error nothing of
     //! the block has happened and `out` is unchanged. Sets `program_end` on M2/M30.
-    [[nodiscard]] std::optional<Diagnostic> run(const Block& block, std::vector<Move>& out,
-                                                bool& program_end);
+    [[nodiscard]] std::optional<Diagnostic> run(const Block& block, std::vector<Move>& out, bool& program_end);
 
     // Macro B system variables that describe the machine state (executor_system_variables.cpp):
     // modal codes #4001-, modal values #4107-, positions #5001-, work offsets #5221-, part counts.
@@ -112,7 +112,7 @@ private:
     [[nodiscard]] double duration_s(const Move& move) const;  //!< for the simulated clock
 
     // Tools (executor_tools.cpp).
-    [[nodiscard]] AxisVector program_offset() const;  //!< work + G92 + G52 + tool length, mm
+    [[nodiscard]] AxisVector program_offset() const;                     //!< work + G92 + G52 + tool length, mm
     std::optional<Diagnostic> number_word(char letter, int& out) const;  //!< H, D: whole numbers
     std::optional<Diagnostic> set_tool_length();
     std::optional<Diagnostic> change_tool(std::vector<Move>& out);
@@ -127,7 +127,8 @@ private:
     [[nodiscard]] std::optional<Diagnostic> check_lathe_offset_write() const;
     void write_lathe_offset();
     [[nodiscard]] std::optional<MacroValue> read_lathe_offset_variable(std::int64_t number) const;
-    [[nodiscard]] std::optional<SystemVariables::WriteError> write_lathe_offset_variable(std::int64_t number, double value);
+    [[nodiscard]] std::optional<SystemVariables::WriteError> write_lathe_offset_variable(std::int64_t number,
+                                                                                         double value);
     // Corner rounding and chamfers, `,R` / `,C` (executor_corner.cpp): the line is held until the
     // next block's move shows where the corner goes.
     std::optional<Diagnostic> check_corner();
@@ -141,7 +142,7 @@ private:
     std::optional<Diagnostic> drill_hole(const struct HolePlan& hole, std::vector<Move>& out);
 
     // Lathe cycles (lathe_cycle_words.cpp, lathe_single_cycles.cpp, lathe_repetitive_cycles.cpp).
-    [[nodiscard]] GCode lathe_cycle_of_block() const;  //!< the block's lathe cycle, or -1
+    [[nodiscard]] GCode lathe_cycle_of_block() const;          //!< the block's lathe cycle, or -1
     [[nodiscard]] const Word* cycle_word(char written) const;  //!< the word as written (U, not X)
     [[nodiscard]] std::optional<Diagnostic> check_lathe_cycle_words(GCode cycle) const;
     std::optional<Diagnostic> lathe_single_cycle(std::vector<Move>& out);
@@ -156,8 +157,8 @@ private:
     std::optional<Diagnostic> finish_cycle(std::vector<Move>& out);
     std::optional<Diagnostic> rough_cycle(std::vector<Move>& out);
     std::optional<Diagnostic> pattern_cycle(std::vector<Move>& out);
-    std::optional<Diagnostic> thread_cycle(std::vector<Move>& out);   //!< G76 (lathe_thread_cycle.cpp)
-    std::optional<Diagnostic> groove_cycle(std::vector<Move>& out);   //!< G74/G75 (lathe_groove_cycles.cpp)
+    std::optional<Diagnostic> thread_cycle(std::vector<Move>& out);  //!< G76 (lathe_thread_cycle.cpp)
+    std::optional<Diagnostic> groove_cycle(std::vector<Move>& out);  //!< G74/G75 (lathe_groove_cycles.cpp)
     std::optional<Diagnostic> sync_to(const AxisVector& target, double lead_mm, std::vector<Move>& out);
     std::optional<Diagnostic> feed_arc(Arc arc, std::vector<Move>& out);
 
@@ -182,36 +183,36 @@ private:
 
     const Block* block_ = nullptr;  //!< the block being run
     BlockWords words_;
-    GCode motion_ = g(80);          //!< motion code for this block (explicit or modal)
+    GCode motion_ = g(80);  //!< motion code for this block (explicit or modal)
 
     CutterCompensator comp_;
     CompSide comp_side_ = CompSide::left;  //!< from check_cutter_comp() for this block's G41/G42
     double comp_radius_mm_ = 0;            //!< likewise, mm
-    AxisVector comp_tip_shift_;  //!< a lathe tool's imaginary tip less its nose centre (G41/G42), mm
+    AxisVector comp_tip_shift_;            //!< a lathe tool's imaginary tip less its nose centre (G41/G42), mm
 
     SequenceReader sequence_reader_;
     bool skip_past_sequence_ = false;
 
     //! A G1 line or G2/G3 arc with a corner word, and what its block made after it, waiting for the next move.
     struct HeldCorner {
-        Word word;                 //!< the ,R or ,C word (its column) ...
-        SourceLocation location;   //!< ... in this block
+        Word word;                //!< the ,R or ,C word (its column) ...
+        SourceLocation location;  //!< ... in this block
         CornerKind kind = CornerKind::round;
         double size_mm = 0;
         Plane plane = Plane::xy;
-        std::vector<Move> moves;   //!< the line or arc first
+        std::vector<Move> moves;  //!< the line or arc first
     };
     std::optional<HeldCorner> corner_;
 
-    AxisVector skip_position_;                  //!< machine coordinates where G31 last skipped (#5061-)
-    std::array<double, 100> macro_outputs_{};   //!< #1100-#1199 as the program wrote them
+    AxisVector skip_position_;                 //!< machine coordinates where G31 last skipped (#5061-)
+    std::array<double, 100> macro_outputs_{};  //!< #1100-#1199 as the program wrote them
     std::array<bool, 100> macro_output_set_{};
 
-    double elapsed_s_ = 0;          //!< simulated time, s
-    int last_mcode_ = 0;            //!< #4113
-    double parts_done_ = 0;         //!< #3901, counted at M2/M30
-    double parts_required_ = 0;     //!< #3902
-    bool warned_small_arc_ = false; //!< the implausible-size warning is given once a run
+    double elapsed_s_ = 0;           //!< simulated time, s
+    int last_mcode_ = 0;             //!< #4113
+    double parts_done_ = 0;          //!< #3901, counted at M2/M30
+    double parts_required_ = 0;      //!< #3902
+    bool warned_small_arc_ = false;  //!< the implausible-size warning is given once a run
 };
 
 }  // namespace nckit::interp

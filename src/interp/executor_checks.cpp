@@ -11,17 +11,26 @@ namespace nckit::interp {
 
 namespace {
 
-bool is_axis_letter(char c) { return axis_from_letter(c).has_value(); }
+bool is_axis_letter(char c) {
+    return axis_from_letter(c).has_value();
+}
 
-bool is_arc(GCode motion) { return motion == g(2) || motion == g(3); }
-bool is_thread(GCode motion) { return motion == g(32) || motion == g(33); }
+bool is_arc(GCode motion) {
+    return motion == g(2) || motion == g(3);
+}
+bool is_thread(GCode motion) {
+    return motion == g(32) || motion == g(33);
+}
 
 //! The centre-offset letters that belong to a plane: G17 I J, G18 I K, G19 J K.
 bool offset_in_plane(char letter, Plane plane) {
     switch (plane) {
-        case Plane::xy: return letter == 'I' || letter == 'J';
-        case Plane::zx: return letter == 'I' || letter == 'K';
-        case Plane::yz: return letter == 'J' || letter == 'K';
+        case Plane::xy:
+            return letter == 'I' || letter == 'J';
+        case Plane::zx:
+            return letter == 'I' || letter == 'K';
+        case Plane::yz:
+            return letter == 'J' || letter == 'K';
     }
     return false;
 }
@@ -58,9 +67,8 @@ std::optional<Diagnostic> Executor::check_words() {
     const bool dwell = non_modal == g(4);
     const bool length_setting = words_.group(ModalGroup::length_comp) == g(43, 1);
     const bool homing = non_modal == g(28) || non_modal == g(30);
-    const bool axes_for_setting = non_modal == g(10) || homing || non_modal == g(52) ||
-                                  non_modal == g(92) || non_modal == g(50) || length_setting ||
-                                  ProgramTransform::sets_transform(words_);
+    const bool axes_for_setting = non_modal == g(10) || homing || non_modal == g(52) || non_modal == g(92) ||
+                                  non_modal == g(50) || length_setting || ProgramTransform::sets_transform(words_);
     const bool transform = ProgramTransform::sets_transform(words_);
     // `G0 G28 G91 Z0` (Fanuc, Haas): the motion code only sets the mode, G28 takes the axes.
     const bool motion_only_sets_mode = homing && (explicit_motion == g(0) || explicit_motion == g(1));
@@ -70,8 +78,7 @@ std::optional<Diagnostic> Executor::check_words() {
     }
     if (non_modal == g(53)) {
         if (explicit_motion >= 0 && explicit_motion != g(0) && explicit_motion != g(1)) {
-            return error(words_.group_column(ModalGroup::non_modal), "bad-combination",
-                         "G53 moves only with G0 or G1");
+            return error(words_.group_column(ModalGroup::non_modal), "bad-combination", "G53 moves only with G0 or G1");
         }
         // A Fanuc control positions at rapid whatever the modal motion (G1, G2, a cycle); G1 in
         // the block itself feeds, as LinuxCNC does. The axis words are machine coordinates,
@@ -87,8 +94,8 @@ std::optional<Diagnostic> Executor::check_words() {
     }
     const bool moves = !dwell && !axes_for_setting && motion_ != g(80);
     const bool cycle = moves && is_drilling_cycle(motion_);
-    const bool tool_table_write = non_modal == g(10) && words_.has('L') && words_.word('L')->value != 2 &&
-                                  words_.word('L')->value != 20;
+    const bool tool_table_write =
+        non_modal == g(10) && words_.has('L') && words_.word('L')->value != 2 && words_.word('L')->value != 20;
 
     for (const Word& word : block_->words) {
         char c = words_.reads_as(word.letter);
@@ -112,7 +119,9 @@ std::optional<Diagnostic> Executor::check_words() {
             continue;
         }
         switch (c) {
-            case 'I': case 'J': case 'K':
+            case 'I':
+            case 'J':
+            case 'K':
                 if (transform && words_.group(ModalGroup::scaling) == g(51)) continue;
                 if (is_arc(motion_) && moves) {
                     if (!offset_in_plane(c, plane)) {
@@ -173,8 +182,8 @@ std::optional<Diagnostic> Executor::check_words() {
     // `G20 F10` could mean 10 in/min or (LinuxCNC, which reads F before the units) 10 mm/min:
     // a factor of 25.4 either way. Fanuc wants G20/G21 alone in its block; nckit refuses F
     // beside a G20/G21 that changes the units.
-    if (const GCode units = words_.group(ModalGroup::units); units >= 0 && words_.has('F') &&
-        (units == g(20)) != (modal_.length_factor_mm != 1.0)) {
+    if (const GCode units = words_.group(ModalGroup::units);
+        units >= 0 && words_.has('F') && (units == g(20)) != (modal_.length_factor_mm != 1.0)) {
         return error(words_.word('F')->column, "bad-combination",
                      fmt::format("F beside G{} that changes the units is ambiguous: give G{} in a block of its own",
                                  units / 10, units / 10));

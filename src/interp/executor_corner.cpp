@@ -26,13 +26,13 @@ std::optional<Diagnostic> Executor::check_corner() {
     const GCode non_modal = words_.group(ModalGroup::non_modal);
     const bool feeds = motion_ == g(1) || motion_ == g(2) || motion_ == g(3);
     if (!feeds || !block_has_axis_words() || non_modal >= 0) {
-        return error(corner.column, "bad-corner",
-                     fmt::format(",{} needs a G1, G2 or G3 move in its block (the corner is at its end point)",
-                                 corner.letter));
+        return error(
+            corner.column, "bad-corner",
+            fmt::format(",{} needs a G1, G2 or G3 move in its block (the corner is at its end point)", corner.letter));
     }
     if (words_.has_m(2) || words_.has_m(30)) {
-        return error(corner.column, "bad-corner", fmt::format(",{} needs a move after it, not the end of the program",
-                                                              corner.letter));
+        return error(corner.column, "bad-corner",
+                     fmt::format(",{} needs a move after it, not the end of the program", corner.letter));
     }
     return std::nullopt;
 }
@@ -44,8 +44,7 @@ std::optional<Diagnostic> Executor::apply_corner(std::vector<Move>& out, std::si
         const auto held_error = [&](std::string message) {
             SourceLocation at = held.location;
             at.column = held.word.column;
-            return error_at(at, "bad-corner",
-                            fmt::format(",{}{}: {}", held.word.letter, held.word.value, message));
+            return error_at(at, "bad-corner", fmt::format(",{}{}: {}", held.word.letter, held.word.value, message));
         };
         std::size_t next = first;
         while (next < out.size() && !is_motion(out[next])) ++next;
@@ -80,8 +79,12 @@ std::optional<Diagnostic> Executor::apply_corner(std::vector<Move>& out, std::si
             return error(word.column, "bad-corner",
                          fmt::format(",{} needs a G1 line or G2/G3 arc in its block", word.letter));
         }
-        HeldCorner held{word, block_->location, word.letter == 'R' ? CornerKind::round : CornerKind::chamfer,
-                        offset_value(word), modal_.plane, {}};
+        HeldCorner held{word,
+                        block_->location,
+                        word.letter == 'R' ? CornerKind::round : CornerKind::chamfer,
+                        offset_value(word),
+                        modal_.plane,
+                        {}};
         held.moves.assign(std::make_move_iterator(out.begin() + static_cast<std::ptrdiff_t>(last - 1)),
                           std::make_move_iterator(out.end()));
         out.resize(last - 1);

@@ -11,9 +11,13 @@ namespace nckit::interp {
 
 namespace {
 
-bool starts_comp(GCode code) { return code == g(41) || code == g(42) || code == g(41, 1) || code == g(42, 1); }
+bool starts_comp(GCode code) {
+    return code == g(41) || code == g(42) || code == g(41, 1) || code == g(42, 1);
+}
 
-Diagnostic to_diagnostic(const CompError& e) { return error_at(e.where, e.code, e.message); }
+Diagnostic to_diagnostic(const CompError& e) {
+    return error_at(e.where, e.code, e.message);
+}
 
 //! Where a lathe tool's imaginary tip (the point its X and Z offsets measure) lies from its nose
 //! centre, by Fanuc's tip orientation: X+ away from the spindle axis, Z+ away from the chuck.
@@ -31,7 +35,9 @@ AxisVector tip_shift(int orientation, double radius_mm) {
 
 }  // namespace
 
-bool Executor::block_starts_comp() const { return starts_comp(words_.group(ModalGroup::cutter_comp)); }
+bool Executor::block_starts_comp() const {
+    return starts_comp(words_.group(ModalGroup::cutter_comp));
+}
 
 std::optional<double> Executor::tool_radius_mm(int d_number) const {
     // A lathe's offset memory holds every offset number: one never set has no nose radius.
@@ -65,7 +71,8 @@ std::optional<Diagnostic> Executor::check_cutter_comp() {
             (non_modal == g(50) && block_has_axis_words())) {
             return refuse(nm_column, "changing coordinate offsets");
         }
-        if (GCode w = words_.group(ModalGroup::work_system); w >= 0 && static_cast<std::size_t>(w / 10 - 54) != modal_.work_system) {
+        if (GCode w = words_.group(ModalGroup::work_system);
+            w >= 0 && static_cast<std::size_t>(w / 10 - 54) != modal_.work_system) {
             return refuse(words_.group_column(ModalGroup::work_system), "changing the work coordinate system");
         }
     }
@@ -99,8 +106,9 @@ std::optional<Diagnostic> Executor::check_cutter_comp() {
         auto radius = tool_radius_mm(number);
         if (!radius) {
             return error(d != nullptr ? d->column : code_column, "unknown-tool",
-                         tools_.empty() ? fmt::format("D{} needs a tool table (--tools FILE or tools = \"FILE\")", number)
-                                        : fmt::format("D{} has no entry in the tool table", number));
+                         tools_.empty()
+                             ? fmt::format("D{} needs a tool table (--tools FILE or tools = \"FILE\")", number)
+                             : fmt::format("D{} has no entry in the tool table", number));
         }
         comp_radius_mm_ = *radius;
         const ToolEntry* entry = tools_.find(number);

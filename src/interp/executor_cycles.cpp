@@ -26,13 +26,17 @@ constexpr int max_repeats = 9999;
 // A peck depth that would need more passes than this is a mistyped Q (Q0.001 for a 100 mm hole).
 constexpr int max_pecks = 100000;
 
-bool is_peck_cycle(GCode code) { return code == g(73) || code == g(83); }
-bool is_shift_cycle(GCode code) { return code == g(76) || code == g(87); }
+bool is_peck_cycle(GCode code) {
+    return code == g(73) || code == g(83);
+}
+bool is_shift_cycle(GCode code) {
+    return code == g(76) || code == g(87);
+}
 }  // namespace
 
 struct HolePlan {
     PlaneAxes axes;
-    double clear_mm = 0;   //!< where the drill axis ends each hole
+    double clear_mm = 0;  //!< where the drill axis ends each hole
     double r_mm = 0;
     double bottom_mm = 0;
     int repeats = 1;
@@ -120,8 +124,8 @@ std::optional<Diagnostic> Executor::drill(std::vector<Move>& out) {
     const bool back_boring = motion_ == g(87);
     if (!back_boring && hole.bottom_mm > hole.r_mm + 1e-9) {
         return error(column_of('R') != 1 ? column_of('R') : motion_column(), "bad-cycle",
-                     fmt::format("the R plane ({:.4f}) lies below the hole bottom ({:.4f})",
-                                 hole.r_mm - offset[d], hole.bottom_mm - offset[d]));
+                     fmt::format("the R plane ({:.4f}) lies below the hole bottom ({:.4f})", hole.r_mm - offset[d],
+                                 hole.bottom_mm - offset[d]));
     }
     if (back_boring && hole.bottom_mm < hole.r_mm - 1e-9) {
         return error(column_of('R') != 1 ? column_of('R') : motion_column(), "bad-cycle",
@@ -194,7 +198,8 @@ std::optional<Diagnostic> Executor::drill_hole(const HolePlan& hole, std::vector
         if (auto e = go(true, hole.r_mm)) return e;
     }
     switch (motion_) {
-        case g(73): case g(83): {
+        case g(73):
+        case g(83): {
             const bool full_retract = motion_ == g(83);
             for (double depth = hole.r_mm - cycle.q_mm; depth > hole.bottom_mm; depth -= cycle.q_mm) {
                 if (auto e = go(false, depth)) return e;
@@ -206,11 +211,13 @@ std::optional<Diagnostic> Executor::drill_hole(const HolePlan& hole, std::vector
             if (auto e = go(false, hole.bottom_mm)) return e;
             return go(true, hole.clear_mm);
         }
-        case g(81): case g(82):
+        case g(81):
+        case g(82):
             if (auto e = go(false, hole.bottom_mm)) return e;
             dwell();
             return go(true, hole.clear_mm);
-        case g(74): case g(84): {
+        case g(74):
+        case g(84): {
             // Tapping: at the bottom the spindle reverses and the tap feeds back out.
             const int in = motion_ == g(74) ? 4 : 3;
             if (auto e = go(false, hole.bottom_mm)) return e;
@@ -228,7 +235,8 @@ std::optional<Diagnostic> Executor::drill_hole(const HolePlan& hole, std::vector
             if (auto e = go(false, hole.bottom_mm)) return e;
             dwell();
             return go(false, hole.clear_mm);
-        case g(86): case g(88):
+        case g(86):
+        case g(88):
             if (auto e = go(false, hole.bottom_mm)) return e;
             dwell();
             spindle(5);

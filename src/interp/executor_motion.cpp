@@ -71,8 +71,8 @@ std::optional<Diagnostic> Executor::check_travel(const AxisVector& low, const Ax
         bool below = lo < axis.min - 1e-9;
         const char* unit = axis.kind == AxisKind::rotary ? "deg" : "mm";
         return error(column_of(letter(axis.axis)), "travel-limit",
-                     fmt::format("{} would move to {:.4f} {}, beyond its travel limit {:.4f} {}",
-                                 letter(axis.axis), below ? lo : hi, unit, below ? axis.min : axis.max, unit));
+                     fmt::format("{} would move to {:.4f} {}, beyond its travel limit {:.4f} {}", letter(axis.axis),
+                                 below ? lo : hi, unit, below ? axis.min : axis.max, unit));
     }
     return std::nullopt;
 }
@@ -99,8 +99,8 @@ std::optional<Diagnostic> Executor::move(std::vector<Move>& out) {
     }
     if (non_modal == g(31)) return probe(out);
     // G92.1 takes no axis words: check_words() gave any to the motion mode, so they move.
-    if (non_modal == g(4) || non_modal == g(10) || non_modal == g(52) || non_modal == g(92) ||
-        non_modal == g(50) || motion_ == g(80) || words_.group(ModalGroup::length_comp) == g(43, 1)) {
+    if (non_modal == g(4) || non_modal == g(10) || non_modal == g(52) || non_modal == g(92) || non_modal == g(50) ||
+        motion_ == g(80) || words_.group(ModalGroup::length_comp) == g(43, 1)) {
         return std::nullopt;
     }
     if (is_drilling_cycle(motion_)) {
@@ -149,8 +149,7 @@ std::optional<Diagnostic> Executor::home(std::vector<Move>& out) {
 std::optional<Diagnostic> Executor::sync(const AxisVector& target, std::vector<Move>& out) {
     const Word* lead_word = words_.has('K') ? words_.word('K') : words_.has('E') ? words_.word('E') : words_.word('F');
     if (lead_word == nullptr) {
-        return error(motion_column(), "missing-word",
-                     "thread needs its lead (F, E or K, mm per revolution)");
+        return error(motion_column(), "missing-word", "thread needs its lead (F, E or K, mm per revolution)");
     }
     double lead = offset_value(*lead_word);
     if (lead <= 0) return error(lead_word->column, "bad-value", "thread lead must be positive");
@@ -208,7 +207,8 @@ std::optional<Diagnostic> Executor::arc(GCode motion, const AxisVector& target, 
             if (half - radius > options_.r_arc_tolerance_mm) {
                 return error(r_word->column, "bad-arc",
                              fmt::format("radius {:.4f} mm is too small to reach the end point "
-                                         "({:.4f} mm away)", radius, chord));
+                                         "({:.4f} mm away)",
+                                         radius, chord));
             }
             radius = half;
         }
@@ -245,7 +245,8 @@ std::optional<Diagnostic> Executor::arc(GCode motion, const AxisVector& target, 
         if (mismatch > 100.0 * tolerance || (mismatch > tolerance && relative > radius_relative_tolerance)) {
             return error(motion_column(), "bad-arc",
                          fmt::format("end point is not on the arc: radius {:.4f} mm at the start, "
-                                     "{:.4f} mm at the end", r0, r1));
+                                     "{:.4f} mm at the end",
+                                     r0, r1));
         }
     }
     AxisBox box = arc_bounds(arc);

@@ -13,10 +13,10 @@
 namespace nckit::interp {
 
 namespace {
-constexpr std::int64_t axes_per_block = 6;     // #5001-#5006 and the like
+constexpr std::int64_t axes_per_block = 6;       // #5001-#5006 and the like
 constexpr std::int64_t work_offset_base = 5221;  // G54 X; +20 for each further system
 constexpr std::int64_t work_offset_stride = 20;
-constexpr double m_per_foot = 0.3048;          // G96 S is in ft/min under G20
+constexpr double m_per_foot = 0.3048;  // G96 S is in ft/min under G20
 }  // namespace
 
 const AxisConfig* Executor::axis_by_number(std::int64_t one_based) const {
@@ -37,32 +37,52 @@ double Executor::from_program_units(Axis axis, double value) const {
 std::optional<MacroValue> Executor::modal_code(int group) const {
     auto code = [](double g) { return MacroValue::of(g); };
     switch (group) {
-        case 1: return code(modal_.motion / 10);
-        case 2: return code(modal_.plane == Plane::xy ? 17 : modal_.plane == Plane::zx ? 18 : 19);
-        case 3: return code(modal_.incremental ? 91 : 90);
-        case 5: return code(modal_.feed_mode == FeedMode::per_revolution ? 95 : 94);
-        case 6: return code(modal_.length_factor_mm != 1.0 ? 20 : 21);
-        case 7: return code(modal_.cutter_comp == 0 ? 40 : modal_.cutter_comp);
-        case 8: return code(modal_.tool.length_mode / 10.0);
-        case 9: return code(is_drilling_cycle(modal_.motion) ? modal_.motion / 10 : 80);
-        case 10: return code(modal_.cycle.return_to_initial ? 98 : 99);
-        case 11: return code(50);
-        case 13: return code(modal_.spindle.constant_surface_speed ? 96 : 97);
-        case 14: return code(54 + static_cast<double>(modal_.work_system));
-        case 15: return code(modal_.path.exact_stop ? 61 : 64);
-        default: return MacroValue{};  // groups nckit has no codes for read vacant
+        case 1:
+            return code(modal_.motion / 10);
+        case 2:
+            return code(modal_.plane == Plane::xy ? 17 : modal_.plane == Plane::zx ? 18 : 19);
+        case 3:
+            return code(modal_.incremental ? 91 : 90);
+        case 5:
+            return code(modal_.feed_mode == FeedMode::per_revolution ? 95 : 94);
+        case 6:
+            return code(modal_.length_factor_mm != 1.0 ? 20 : 21);
+        case 7:
+            return code(modal_.cutter_comp == 0 ? 40 : modal_.cutter_comp);
+        case 8:
+            return code(modal_.tool.length_mode / 10.0);
+        case 9:
+            return code(is_drilling_cycle(modal_.motion) ? modal_.motion / 10 : 80);
+        case 10:
+            return code(modal_.cycle.return_to_initial ? 98 : 99);
+        case 11:
+            return code(50);
+        case 13:
+            return code(modal_.spindle.constant_surface_speed ? 96 : 97);
+        case 14:
+            return code(54 + static_cast<double>(modal_.work_system));
+        case 15:
+            return code(modal_.path.exact_stop ? 61 : 64);
+        default:
+            return MacroValue{};  // groups nckit has no codes for read vacant
     }
 }
 
 std::optional<MacroValue> Executor::read_system(std::int64_t n) const {
     if (n >= 4001 && n <= 4022) return modal_code(static_cast<int>(n - 4000));
     switch (n) {
-        case 3901: return MacroValue::of(parts_done_);
-        case 3902: return MacroValue::of(parts_required_);
-        case 4107: return MacroValue::of(modal_.tool.d_number);
-        case 4109: return MacroValue::of(modal_.feed / modal_.length_factor_mm);
-        case 4111: return MacroValue::of(modal_.tool.h_number);
-        case 4113: return MacroValue::of(last_mcode_);
+        case 3901:
+            return MacroValue::of(parts_done_);
+        case 3902:
+            return MacroValue::of(parts_required_);
+        case 4107:
+            return MacroValue::of(modal_.tool.d_number);
+        case 4109:
+            return MacroValue::of(modal_.feed / modal_.length_factor_mm);
+        case 4111:
+            return MacroValue::of(modal_.tool.h_number);
+        case 4113:
+            return MacroValue::of(last_mcode_);
         case 4119: {
             // S as programmed: the surface speed is kept in m/min, but a G20 program wrote ft/min.
             const SpindleState& spindle = modal_.spindle;
@@ -70,8 +90,10 @@ std::optional<MacroValue> Executor::read_system(std::int64_t n) const {
             double speed = spindle.surface_speed_m_min;
             return MacroValue::of(inch_units() ? speed / m_per_foot : speed);
         }
-        case 4120: return MacroValue::of(modal_.tool.selected);
-        default: break;
+        case 4120:
+            return MacroValue::of(modal_.tool.selected);
+        default:
+            break;
     }
     if (n >= first_tool_variable && n <= last_tool_variable) return read_tool_variable(n);
     if (n >= first_macro_input && n <= last_macro_input) return read_macro_input(n);

@@ -19,15 +19,21 @@ enum class ToolColumn { length_wear, length, radius_wear, radius };
 
 double& tool_field(ToolEntry& tool, ToolColumn column) {
     switch (column) {
-        case ToolColumn::length_wear: return tool.length_wear_mm;
-        case ToolColumn::length: return tool.length_mm;
-        case ToolColumn::radius_wear: return tool.radius_wear_mm;
-        case ToolColumn::radius: return tool.radius_mm;
+        case ToolColumn::length_wear:
+            return tool.length_wear_mm;
+        case ToolColumn::length:
+            return tool.length_mm;
+        case ToolColumn::radius_wear:
+            return tool.radius_wear_mm;
+        case ToolColumn::radius:
+            return tool.radius_mm;
     }
     return tool.length_mm;
 }
 
-bool is_whole_number(double value) { return value == std::floor(value); }
+bool is_whole_number(double value) {
+    return value == std::floor(value);
+}
 }  // namespace
 
 AxisVector Executor::program_offset() const {
@@ -141,8 +147,7 @@ std::optional<Diagnostic> Executor::check_tool_table_write() const {
     for (const AxisConfig& axis : machine_.axes) {
         char c = letter(axis.axis);
         if (words_.has(c) && !(linuxcnc_form && (c == 'Z' || c == 'X'))) {
-            return error(column_of(c), "unused-word",
-                         fmt::format("G10 L{} takes no {} word", kind, c));
+            return error(column_of(c), "unused-word", fmt::format("G10 L{} takes no {} word", kind, c));
         }
     }
     return std::nullopt;
@@ -162,11 +167,21 @@ void Executor::write_tool_table() {
     }
     const double value = length(*words_.word('R'));
     switch (kind) {
-        case 1: case 10: set(tool.length_mm, value); break;  // L1: Fanuc memory A, one value
-        case 11: set(tool.length_wear_mm, value); break;
-        case 12: set(tool.radius_mm, value); break;
-        case 13: set(tool.radius_wear_mm, value); break;
-        default: break;
+        case 1:
+        case 10:
+            set(tool.length_mm, value);
+            break;  // L1: Fanuc memory A, one value
+        case 11:
+            set(tool.length_wear_mm, value);
+            break;
+        case 12:
+            set(tool.radius_mm, value);
+            break;
+        case 13:
+            set(tool.radius_wear_mm, value);
+            break;
+        default:
+            break;
     }
 }
 

@@ -61,8 +61,9 @@ std::optional<Diagnostic> Executor::transformed_move(std::vector<Move>& out) {
                     at = m.to;
                 } else if constexpr (std::is_same_v<T, Arc>) {
                     if (!transform_.plane_scale(m.plane)) {
-                        problem = error(motion_column(), "bad-transform",
-                                        "G2/G3 with unequal scaling of the arc's plane axes (the path would be an ellipse)");
+                        problem =
+                            error(motion_column(), "bad-transform",
+                                  "G2/G3 with unequal scaling of the arc's plane axes (the path would be an ellipse)");
                         return;
                     }
                     m.from = at;

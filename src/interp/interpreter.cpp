@@ -20,7 +20,9 @@ struct Interpreter::State {
     std::optional<interp::ngc::NgcRunner> ngc;    // LinuxCNC's RS-274/NGC
 
     std::optional<InterpResult> fill(std::vector<Move>& out) { return ngc ? ngc->fill(out) : runner->fill(out); }
-    [[nodiscard]] bool recoverable() const { return ngc ? ngc->error_is_recoverable() : runner->error_is_recoverable(); }
+    [[nodiscard]] bool recoverable() const {
+        return ngc ? ngc->error_is_recoverable() : runner->error_is_recoverable();
+    }
     std::vector<Move> pending;
     std::uint64_t batches = 0;
     std::size_t next_pending = 0;
@@ -28,7 +30,8 @@ struct Interpreter::State {
 
     //! The run is over: keep #500-#999, as a control does whatever stopped the program.
     void finish(InterpResult result) {
-        if (auto error = ngc ? ngc->save_parameters() : runner->save_retained(); error && std::holds_alternative<ProgramEnd>(result)) {
+        if (auto error = ngc ? ngc->save_parameters() : runner->save_retained();
+            error && std::holds_alternative<ProgramEnd>(result)) {
             result = std::move(*error);
         }
         finished = std::move(result);
@@ -41,7 +44,9 @@ Interpreter::Interpreter(Interpreter&&) noexcept = default;
 Interpreter& Interpreter::operator=(Interpreter&&) noexcept = default;
 Interpreter::~Interpreter() = default;
 
-const MachineConfig& Interpreter::machine() const { return state_->machine; }
+const MachineConfig& Interpreter::machine() const {
+    return state_->machine;
+}
 
 ModalView Interpreter::modal_view() const {
     return state_->ngc ? state_->ngc->modal_view() : state_->runner->modal_view();
@@ -50,7 +55,9 @@ std::uint64_t Interpreter::main_program_offset() const {
     return state_->ngc ? state_->ngc->main_program_offset() : state_->runner->main_program_offset();
 }
 
-std::uint64_t Interpreter::output_batch() const { return state_->batches; }
+std::uint64_t Interpreter::output_batch() const {
+    return state_->batches;
+}
 
 InterpResult Interpreter::next() {
     State& s = *state_;
@@ -61,8 +68,7 @@ InterpResult Interpreter::next() {
         ++s.batches;
         // The moves of the block that ended the program still go out before the end.
         if (auto stop = s.fill(s.pending)) {
-            if (s.options.keep_going_after_errors && s.recoverable() &&
-                std::holds_alternative<Diagnostic>(*stop)) {
+            if (s.options.keep_going_after_errors && s.recoverable() && std::holds_alternative<Diagnostic>(*stop)) {
                 s.pending.clear();  // the block in error moves nothing
                 return std::move(*stop);
             }

@@ -26,22 +26,24 @@ constexpr std::array rows{
     CodeRow{lathe_face_grooving, {g(74), g(74), g(76)}},
     CodeRow{lathe_od_grooving, {g(75), g(75), g(77)}},
     CodeRow{lathe_thread_repeat, {g(76), g(76), g(78)}},
-    CodeRow{g(94), {g(98), g(94), g(94)}},      // feed per minute
-    CodeRow{g(95), {g(99), g(95), g(95)}},      // feed per revolution
-    CodeRow{g(50), {g(50), g(92), g(92)}},      // coordinate setting, spindle clamp
-    CodeRow{g(90), {-1, g(90), g(90)}},         // absolute (system A: X Z)
-    CodeRow{g(91), {-1, g(91), g(91)}},         // incremental (system A: U W)
-    CodeRow{g(98), {-1, g(98), g(98)}},         // drilling: back to the initial level
-    CodeRow{g(99), {-1, g(99), g(99)}},         // drilling: back to the R level
-    CodeRow{g(20), {g(20), g(20), g(70)}},      // inch
-    CodeRow{g(21), {g(21), g(21), g(71)}},      // metric
+    CodeRow{g(94), {g(98), g(94), g(94)}},  // feed per minute
+    CodeRow{g(95), {g(99), g(95), g(95)}},  // feed per revolution
+    CodeRow{g(50), {g(50), g(92), g(92)}},  // coordinate setting, spindle clamp
+    CodeRow{g(90), {-1, g(90), g(90)}},     // absolute (system A: X Z)
+    CodeRow{g(91), {-1, g(91), g(91)}},     // incremental (system A: U W)
+    CodeRow{g(98), {-1, g(98), g(98)}},     // drilling: back to the initial level
+    CodeRow{g(99), {-1, g(99), g(99)}},     // drilling: back to the R level
+    CodeRow{g(20), {g(20), g(20), g(70)}},  // inch
+    CodeRow{g(21), {g(21), g(21), g(71)}},  // metric
 };
 
 std::size_t column_of(GCodeSystem system) {
     return system == GCodeSystem::a ? 0 : system == GCodeSystem::b ? 1 : 2;
 }
 
-char system_letter(GCodeSystem system) { return "ABC"[column_of(system)]; }
+char system_letter(GCodeSystem system) {
+    return "ABC"[column_of(system)];
+}
 
 std::string plain_name(GCode code) {
     return code % 10 == 0 ? fmt::format("G{}", code / 10) : fmt::format("G{}.{}", code / 10, code % 10);

@@ -76,9 +76,9 @@ std::optional<Diagnostic> Executor::check_lathe_cycle_words(GCode cycle) const {
         if (fresh && (has_x || has_z)) {
             const bool feed = threading ? words_.has('F') : (words_.has('F') || modal_.feed_set);
             if (!feed) {
-                return error(motion_column(), threading ? "missing-word" : "no-feed",
-                             threading ? fmt::format("{} needs the thread lead F", name)
-                                       : "cutting move with no feed rate (F)");
+                return error(
+                    motion_column(), threading ? "missing-word" : "no-feed",
+                    threading ? fmt::format("{} needs the thread lead F", name) : "cutting move with no feed rate (F)");
             }
         }
         if (const Word* q = words_.word('Q'); q != nullptr && q->value != 0) {

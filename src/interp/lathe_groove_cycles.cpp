@@ -29,10 +29,12 @@ std::optional<Diagnostic> Executor::groove_cycle(std::vector<Move>& out) {
     const bool moves = words_.has('X') || words_.has('Z');
     if (!moves) {
         if (words_.has('P') || words_.has('Q')) {
-            return error(column, "missing-word", fmt::format("{} with P or Q needs its end point X (U) or Z (W)", name));
+            return error(column, "missing-word",
+                         fmt::format("{} with P or Q needs its end point X (U) or Z (W)", name));
         }
         if (const Word* r = words_.word('R')) {
-            if (r->value < 0) return error(r->column, "bad-value", fmt::format("{} R (retract) must not be negative", name));
+            if (r->value < 0)
+                return error(r->column, "bad-value", fmt::format("{} R (retract) must not be negative", name));
             settings.groove_retract_mm = offset_value(*r);
         }
         return std::nullopt;
@@ -77,7 +79,8 @@ std::optional<Diagnostic> Executor::groove_cycle(std::vector<Move>& out) {
     const double pecks = peck > 0 ? depth / peck : 1.0;
     const double columns = across > 1e-9 ? across / step + 1.0 : 1.0;
     if (pecks * columns * 2.0 > max_groove_moves) {
-        return error(column, "bad-value", fmt::format("{}: the peck and step need more than {} moves", name, max_groove_moves));
+        return error(column, "bad-value",
+                     fmt::format("{}: the peck and step need more than {} moves", name, max_groove_moves));
     }
     auto at = [&](double peck_mm, double step_mm) {
         AxisVector p = start;
@@ -94,7 +97,8 @@ std::optional<Diagnostic> Executor::groove_cycle(std::vector<Move>& out) {
             reached = peck > 0 ? std::min(reached + peck, depth) : depth;
             if (auto e = straight(g(1), at(reached, shift), out)) return e;
             if (reached < depth - 1e-9 && settings.groove_retract_mm > 0) {
-                if (auto e = straight(g(0), at(std::max(0.0, reached - settings.groove_retract_mm), shift), out)) return e;
+                if (auto e = straight(g(0), at(std::max(0.0, reached - settings.groove_retract_mm), shift), out))
+                    return e;
             }
         }
         if (auto e = straight(g(0), at(0, shift), out)) return e;

@@ -31,7 +31,8 @@ std::optional<Diagnostic> Executor::lathe_repetitive_cycle(std::vector<Move>& ou
     if (cycle == lathe_face_grooving || cycle == lathe_od_grooving) return groove_cycle(out);
     const bool shape_block = words_.has('P') || words_.has('Q');
     if (shape_block && !(words_.has('P') && words_.has('Q'))) {
-        return error(column, "missing-word", fmt::format("{} needs both P and Q (first and last block of the shape)", name));
+        return error(column, "missing-word",
+                     fmt::format("{} needs both P and Q (first and last block of the shape)", name));
     }
     if (cycle == lathe_finish) {
         if (!shape_block) return error(column, "missing-word", fmt::format("{} needs P and Q", name));
@@ -52,7 +53,8 @@ std::optional<Diagnostic> Executor::lathe_cycle_settings() {
         if (word == nullptr) return std::nullopt;
         const double value = offset_value(*word);
         if (value <= 0) {
-            return error(word->column, "bad-value", fmt::format("{} {} ({}) must be positive", name, word->letter, what));
+            return error(word->column, "bad-value",
+                         fmt::format("{} {} ({}) must be positive", name, word->letter, what));
         }
         into = value;
         return std::nullopt;
@@ -62,8 +64,9 @@ std::optional<Diagnostic> Executor::lathe_cycle_settings() {
         if (const Word* w = cycle_word('W')) settings.relief_z_mm = offset_value(*w);
         if (const Word* r = words_.word('R')) {
             if (r->value < 1 || r->value > max_pattern_passes || r->value != std::floor(r->value)) {
-                return error(r->column, "bad-value",
-                             fmt::format("{} R (passes) must be a whole number from 1 to {}", name, max_pattern_passes));
+                return error(
+                    r->column, "bad-value",
+                    fmt::format("{} R (passes) must be a whole number from 1 to {}", name, max_pattern_passes));
             }
             settings.divisions = static_cast<int>(r->value);
         }
@@ -87,7 +90,8 @@ std::optional<Diagnostic> Executor::run_pq_blocks(PqShape& shape) {
     const Word* q_word = words_.word('Q');
     for (const Word* word : {p_word, q_word}) {
         if (word->value < 1 || word->value > 99999 || word->value != std::floor(word->value)) {
-            return error(word->column, "bad-value", fmt::format("{} must be a sequence number 1 to 99999", word->letter));
+            return error(word->column, "bad-value",
+                         fmt::format("{} must be a sequence number 1 to 99999", word->letter));
         }
     }
     std::vector<Block> blocks;

@@ -21,10 +21,12 @@
 namespace nckit::interp {
 
 namespace {
-constexpr double flat_mm = 1e-9;       // rounding between the shape's own end points
+constexpr double flat_mm = 1e-9;  // rounding between the shape's own end points
 constexpr int max_rough_passes = 100000;
 
-double sign_of(double value) { return value > 0 ? 1.0 : value < 0 ? -1.0 : 0.0; }
+double sign_of(double value) {
+    return value > 0 ? 1.0 : value < 0 ? -1.0 : 0.0;
+}
 }  // namespace
 
 std::optional<Diagnostic> Executor::rough_cycle(std::vector<Move>& out) {
@@ -61,7 +63,8 @@ std::optional<Diagnostic> Executor::rough_cycle(std::vector<Move>& out) {
     const Line* approach_line = nullptr;
     std::size_t approach_lines = 0;
     for (std::size_t i = 0; i < approach; ++i) {
-        if (std::holds_alternative<Arc>(shape[i].what) || std::holds_alternative<SyncMove>(shape[i].what)) ++approach_lines;
+        if (std::holds_alternative<Arc>(shape[i].what) || std::holds_alternative<SyncMove>(shape[i].what))
+            ++approach_lines;
         if (const auto* line = std::get_if<Line>(&shape[i].what)) {
             approach_line = line;
             ++approach_lines;
@@ -121,14 +124,15 @@ std::optional<Diagnostic> Executor::rough_cycle(std::vector<Move>& out) {
         if (!d_ok || !l_ok) {
             const std::string one_way = pockets ? std::string(1, letter(axes.length))
                                                 : fmt::format("{} and in {}", letter(axes.depth), letter(axes.length));
-            return error_at(element.where, "bad-cycle",
-                            fmt::format("{} {}: the finishing shape must run one way in {} (this block turns back in {})",
-                                        name, type, one_way, letter(d_ok ? axes.length : axes.depth)));
+            return error_at(
+                element.where, "bad-cycle",
+                fmt::format("{} {}: the finishing shape must run one way in {} (this block turns back in {})", name,
+                            type, one_way, letter(d_ok ? axes.length : axes.depth)));
         }
     }
     if (along == 0) {
-        return error(column_of('Q'), "bad-cycle", fmt::format("{}: the finishing shape has no length in {}", name,
-                                                              letter(axes.length)));
+        return error(column_of('Q'), "bad-cycle",
+                     fmt::format("{}: the finishing shape has no length in {}", name, letter(axes.length)));
     }
     std::vector<Move> moved;
     for (const Move& element : profile) moved.push_back(shifted(element, allowance));
@@ -144,10 +148,9 @@ std::optional<Diagnostic> Executor::rough_cycle(std::vector<Move>& out) {
     const double end_l = (*move_end(moved.back()))[axes.length];
     const double level_count = std::floor((a_d - floor_d) * up / depth_mm - flat_mm);
     if ((a_d - floor_d) * up <= flat_mm) {
-        const std::uint32_t column = depth_allowance != nullptr ? depth_allowance->column
-                                                                : words_.group_column(ModalGroup::non_modal);
-        return error(column, "bad-cycle",
-                     fmt::format("{}: the start point lies inside the finishing allowance", name));
+        const std::uint32_t column =
+            depth_allowance != nullptr ? depth_allowance->column : words_.group_column(ModalGroup::non_modal);
+        return error(column, "bad-cycle", fmt::format("{}: the start point lies inside the finishing allowance", name));
     }
     if (level_count > max_rough_passes) {
         return error(words_.group_column(ModalGroup::non_modal), "bad-value",

@@ -84,7 +84,8 @@ std::optional<Diagnostic> Executor::thread_cycle(std::vector<Move>& out) {
                      fmt::format("{}: the thread height and the first depth must be positive", name));
     }
     if (allowance < 0 || allowance >= height) {
-        return error(column, "bad-value", fmt::format("{}: the finishing allowance must lie between 0 and the height", name));
+        return error(column, "bad-value",
+                     fmt::format("{}: the finishing allowance must lie between 0 and the height", name));
     }
     if (std::pow((height - allowance) / first, 2.0) > max_thread_passes) {
         return error(first_word->column, "bad-value",

@@ -17,26 +17,36 @@
 namespace nckit::interp {
 
 namespace {
-constexpr int offsets_per_page = 100;   // #2001-#2099 and so on: offsets 1 to 99
+constexpr int offsets_per_page = 100;  // #2001-#2099 and so on: offsets 1 to 99
 constexpr int max_lathe_offset = 99;
-constexpr int geometry_base = 10000;    // G10 P10001: geometry of offset 1
+constexpr int geometry_base = 10000;  // G10 P10001: geometry of offset 1
 
 enum class LatheColumn { x_wear, z_wear, radius_wear, tip, x_geometry, z_geometry, radius_geometry, none };
 
 LatheColumn column_of_page(std::int64_t page) {
     switch (page) {
-        case 0: return LatheColumn::x_wear;
-        case 1: return LatheColumn::z_wear;
-        case 2: return LatheColumn::radius_wear;
-        case 3: return LatheColumn::tip;
-        case 7: return LatheColumn::x_geometry;
-        case 8: return LatheColumn::z_geometry;
-        case 9: return LatheColumn::radius_geometry;
-        default: return LatheColumn::none;
+        case 0:
+            return LatheColumn::x_wear;
+        case 1:
+            return LatheColumn::z_wear;
+        case 2:
+            return LatheColumn::radius_wear;
+        case 3:
+            return LatheColumn::tip;
+        case 7:
+            return LatheColumn::x_geometry;
+        case 8:
+            return LatheColumn::z_geometry;
+        case 9:
+            return LatheColumn::radius_geometry;
+        default:
+            return LatheColumn::none;
     }
 }
 
-bool is_x(LatheColumn c) { return c == LatheColumn::x_wear || c == LatheColumn::x_geometry; }
+bool is_x(LatheColumn c) {
+    return c == LatheColumn::x_wear || c == LatheColumn::x_geometry;
+}
 }  // namespace
 
 std::optional<Diagnostic> Executor::select_lathe_tool(const Word& t) {
@@ -65,19 +75,21 @@ bool Executor::is_lathe_offset_write() const {
 std::optional<Diagnostic> Executor::check_lathe_offset_write() const {
     const Word* p = words_.word('P');
     const std::uint32_t column = words_.group_column(ModalGroup::non_modal);
-    if (p == nullptr) return error(column, "bad-g10", "G10 on a lathe needs P, the offset number (or L2 P for a work system)");
+    if (p == nullptr)
+        return error(column, "bad-g10", "G10 on a lathe needs P, the offset number (or L2 P for a work system)");
     const double number = p->value >= geometry_base ? p->value - geometry_base : p->value;
     if (number < 1 || number > max_lathe_offset || p->value != std::floor(p->value)) {
         return error(p->column, "bad-g10",
-                     fmt::format("G10 P: wear offset 1 to {} or geometry {} to {}", max_lathe_offset,
-                                 geometry_base + 1, geometry_base + max_lathe_offset));
+                     fmt::format("G10 P: wear offset 1 to {} or geometry {} to {}", max_lathe_offset, geometry_base + 1,
+                                 geometry_base + max_lathe_offset));
     }
     for (const Word& word : block_->words) {
         const char c = words_.reads_as(word.letter);
         if (c == 'G' || c == 'N' || c == 'P' || c == 'X' || c == 'Z' || c == 'R' || c == 'Q') continue;
         return error(word.column, "unused-word", fmt::format("G10 P (lathe offset) takes no {} word", word.letter));
     }
-    if (const Word* q = words_.word('Q'); q != nullptr && (q->value < 0 || q->value > 9 || q->value != std::floor(q->value))) {
+    if (const Word* q = words_.word('Q');
+        q != nullptr && (q->value < 0 || q->value > 9 || q->value != std::floor(q->value))) {
         return error(q->column, "bad-value", "G10 Q is a tip orientation 0 to 9");
     }
     return std::nullopt;
@@ -90,8 +102,10 @@ void Executor::write_lathe_offset() {
     auto set = [&](double& field, char letter, double value) {
         field = words_.incremental_letter[letter - 'A'] ? field + value : value;
     };
-    if (const Word* x = words_.word('X')) set(geometry ? tool.x_offset_mm : tool.x_wear_mm, 'X', axis_value(Axis::X, *x));
-    if (const Word* z = words_.word('Z')) set(geometry ? tool.length_mm : tool.length_wear_mm, 'Z', axis_value(Axis::Z, *z));
+    if (const Word* x = words_.word('X'))
+        set(geometry ? tool.x_offset_mm : tool.x_wear_mm, 'X', axis_value(Axis::X, *x));
+    if (const Word* z = words_.word('Z'))
+        set(geometry ? tool.length_mm : tool.length_wear_mm, 'Z', axis_value(Axis::Z, *z));
     if (const Word* r = words_.word('R')) (geometry ? tool.radius_mm : tool.radius_wear_mm) = offset_value(*r);
     if (const Word* q = words_.word('Q')) tool.orientation = static_cast<int>(q->value);
 }
@@ -105,14 +119,28 @@ std::optional<MacroValue> Executor::read_lathe_offset_variable(std::int64_t n) c
     if (tool == nullptr) return MacroValue::of(0);  // an offset never set reads 0, as on a control
     double mm = 0;
     switch (column) {
-        case LatheColumn::x_wear: mm = tool->x_wear_mm; break;
-        case LatheColumn::z_wear: mm = tool->length_wear_mm; break;
-        case LatheColumn::radius_wear: mm = tool->radius_wear_mm; break;
-        case LatheColumn::tip: return MacroValue::of(tool->orientation);
-        case LatheColumn::x_geometry: mm = tool->x_offset_mm; break;
-        case LatheColumn::z_geometry: mm = tool->length_mm; break;
-        case LatheColumn::radius_geometry: mm = tool->radius_mm; break;
-        case LatheColumn::none: break;
+        case LatheColumn::x_wear:
+            mm = tool->x_wear_mm;
+            break;
+        case LatheColumn::z_wear:
+            mm = tool->length_wear_mm;
+            break;
+        case LatheColumn::radius_wear:
+            mm = tool->radius_wear_mm;
+            break;
+        case LatheColumn::tip:
+            return MacroValue::of(tool->orientation);
+        case LatheColumn::x_geometry:
+            mm = tool->x_offset_mm;
+            break;
+        case LatheColumn::z_geometry:
+            mm = tool->length_mm;
+            break;
+        case LatheColumn::radius_geometry:
+            mm = tool->radius_mm;
+            break;
+        case LatheColumn::none:
+            break;
     }
     return MacroValue::of(is_x(column) ? to_program_units(Axis::X, mm) : mm / modal_.length_factor_mm);
 }
@@ -122,8 +150,7 @@ std::optional<SystemVariables::WriteError> Executor::write_lathe_offset_variable
     const int number = static_cast<int>((n - first_tool_variable) % offsets_per_page + 1);
     const LatheColumn column = column_of_page(page);
     if (column == LatheColumn::none || number > max_lathe_offset) {
-        return SystemVariables::WriteError{alarm::illegal_variable,
-                                           fmt::format("#{} is no tool offset of a 0i-T", n)};
+        return SystemVariables::WriteError{alarm::illegal_variable, fmt::format("#{} is no tool offset of a 0i-T", n)};
     }
     if (column == LatheColumn::tip && (value < 0 || value > 9 || value != std::floor(value))) {
         return SystemVariables::WriteError{alarm::argument_range,
@@ -132,14 +159,29 @@ std::optional<SystemVariables::WriteError> Executor::write_lathe_offset_variable
     ToolEntry& tool = tools_.entry(number);
     const double mm = is_x(column) ? from_program_units(Axis::X, value) : value * modal_.length_factor_mm;
     switch (column) {
-        case LatheColumn::x_wear: tool.x_wear_mm = mm; break;
-        case LatheColumn::z_wear: tool.length_wear_mm = mm; break;
-        case LatheColumn::radius_wear: tool.radius_wear_mm = mm; break;
-        case LatheColumn::tip: tool.orientation = static_cast<int>(value); break;
-        case LatheColumn::x_geometry: tool.x_offset_mm = mm; break;
-        case LatheColumn::z_geometry: tool.length_mm = mm; break;
-        case LatheColumn::radius_geometry: tool.radius_mm = mm; break;
-        case LatheColumn::none: break;
+        case LatheColumn::x_wear:
+            tool.x_wear_mm = mm;
+            break;
+        case LatheColumn::z_wear:
+            tool.length_wear_mm = mm;
+            break;
+        case LatheColumn::radius_wear:
+            tool.radius_wear_mm = mm;
+            break;
+        case LatheColumn::tip:
+            tool.orientation = static_cast<int>(value);
+            break;
+        case LatheColumn::x_geometry:
+            tool.x_offset_mm = mm;
+            break;
+        case LatheColumn::z_geometry:
+            tool.length_mm = mm;
+            break;
+        case LatheColumn::radius_geometry:
+            tool.radius_mm = mm;
+            break;
+        case LatheColumn::none:
+            break;
     }
     return std::nullopt;
 }

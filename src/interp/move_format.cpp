@@ -53,9 +53,12 @@ void feed_text(std::string& out, const Feed& feed) {
 
 std::string io_code(const Io& io) {
     switch (io.kind) {
-        case IoKind::mcode: return fmt::format("M{}", io.number);
-        case IoKind::spindle_speed: return "S";
-        case IoKind::tool_select: return fmt::format("T{}", io.number);
+        case IoKind::mcode:
+            return fmt::format("M{}", io.number);
+        case IoKind::spindle_speed:
+            return "S";
+        case IoKind::tool_select:
+            return fmt::format("T{}", io.number);
     }
     return "?";
 }
@@ -90,9 +93,12 @@ void json_feed(std::string& out, const Feed& feed) {
 
 const char* plane_name(Plane plane) {
     switch (plane) {
-        case Plane::xy: return "xy";
-        case Plane::zx: return "zx";
-        case Plane::yz: return "yz";
+        case Plane::xy:
+            return "xy";
+        case Plane::zx:
+            return "zx";
+        case Plane::yz:
+            return "yz";
     }
     return "xy";
 }
@@ -150,8 +156,8 @@ void append_move_json(std::string& out, const Move& move, const MachineConfig& m
                        json_axes(out, "end", a.to, machine);
                        json_axes(out, "center", a.center, machine, true);
                        fmt::format_to(std::back_inserter(out), ",\"dir\":\"{}\",\"plane\":\"{}\",\"turns\":{}",
-                                      a.direction == ArcDirection::clockwise ? "cw" : "ccw",
-                                      plane_name(a.plane), a.full_turns);
+                                      a.direction == ArcDirection::clockwise ? "cw" : "ccw", plane_name(a.plane),
+                                      a.full_turns);
                        json_feed(out, a.feed);
                        if (a.path.exact_stop) out += ",\"exact_stop\":true";
                    },
@@ -167,7 +173,8 @@ void append_move_json(std::string& out, const Move& move, const MachineConfig& m
                    },
                    [&](const Io& io) {
                        fmt::format_to(std::back_inserter(out), ",\"kind\":\"io\",\"code\":\"{}\"", io_code(io));
-                       if (io.kind == IoKind::spindle_speed || (io.kind == IoKind::mcode && (io.number == 3 || io.number == 4))) {
+                       if (io.kind == IoKind::spindle_speed ||
+                           (io.kind == IoKind::mcode && (io.number == 3 || io.number == 4))) {
                            out += io.constant_surface_speed ? ",\"surface_speed_m_min\":" : ",\"rpm\":";
                            json_number(out, io.value);
                            if (io.constant_surface_speed && io.rpm_clamp > 0) {

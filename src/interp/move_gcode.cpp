@@ -17,15 +17,20 @@ namespace {
 
 const char* plane_code(Plane plane) {
     switch (plane) {
-        case Plane::xy: return "G17";
-        case Plane::zx: return "G18";
-        case Plane::yz: return "G19";
+        case Plane::xy:
+            return "G17";
+        case Plane::zx:
+            return "G18";
+        case Plane::yz:
+            return "G19";
     }
     return "G17";
 }
 
 //! The centre-offset letter of a plane axis: I for X, J for Y, K for Z.
-char offset_letter(Axis axis) { return axis == Axis::X ? 'I' : axis == Axis::Y ? 'J' : 'K'; }
+char offset_letter(Axis axis) {
+    return axis == Axis::X ? 'I' : axis == Axis::Y ? 'J' : 'K';
+}
 
 //! Text that may stand inside a comment: G-code comments do not nest, so a '(' or ')' of a file
 //! or machine name (`part(2).nc`) would end the comment early or be refused; they become [ ].
@@ -53,8 +58,7 @@ const char* feed_mode_code(FeedMode mode, const MachineConfig& machine) {
 
 void GcodeWriter::append_header(std::string& out, const std::string& source_name) const {
     fmt::format_to(std::back_inserter(out), "( {} expanded by nckit for machine {} )\n",
-                   comment_text(std::filesystem::path(source_name).filename().string()),
-                   comment_text(machine_.name));
+                   comment_text(std::filesystem::path(source_name).filename().string()), comment_text(machine_.name));
     out += "( one move per block, absolute machine coordinates in mm; dwell P in ms )\n";
     // Offsets cleared (G54, and G92, which LinuxCNC keeps between programs) so that program
     // coordinates are machine coordinates; radius mode because the moves carry radii whatever
@@ -160,7 +164,9 @@ void GcodeWriter::append(std::string& out, const Move& move) {
                         fmt::format_to(std::back_inserter(out), "M{}", m.number);
                         ended_ = m.number == 2 || m.number == 30;
                         break;
-                    case IoKind::tool_select: fmt::format_to(std::back_inserter(out), "T{}", m.number); break;
+                    case IoKind::tool_select:
+                        fmt::format_to(std::back_inserter(out), "T{}", m.number);
+                        break;
                     case IoKind::spindle_speed:
                         if (m.constant_surface_speed) {
                             // LinuxCNC's form of the clamp (G96 D) rather than Fanuc's G50 S.

@@ -55,10 +55,7 @@ std::optional<std::string> operator_message(std::string_view comment) {
 }  // namespace
 
 ProgramRunner::ProgramRunner(const MachineConfig& machine, ProgramSource main, const InterpreterOptions& options)
-    : machine_(machine),
-      options_(options),
-      executor_(machine, options_),
-      library_(options.library_dir) {
+    : machine_(machine), options_(options), executor_(machine, options_), library_(options.library_dir) {
     eval_settings_.least_increment_input = machine.decimal_point_input == DecimalPointInput::least_increment;
     variables_.set_system(this);
     sources_.reserve(max_call_depth + 1);
@@ -67,9 +64,8 @@ ProgramRunner::ProgramRunner(const MachineConfig& machine, ProgramSource main, c
     Frame main_frame;
     main_frame.program = location;
     frames_.push_back(std::move(main_frame));
-    executor_.set_sequence_reader([this](std::int64_t p, std::int64_t q, std::vector<Block>& out) {
-        return read_sequence(p, q, out);
-    });
+    executor_.set_sequence_reader(
+        [this](std::int64_t p, std::int64_t q, std::vector<Block>& out) { return read_sequence(p, q, out); });
     if (auto error = executor_.start()) startup_error_ = std::move(*error);
     if (!startup_error_ && !options_.retained_file.empty()) {
         auto retained = load_retained(options_.retained_file);
@@ -185,9 +181,9 @@ std::optional<InterpResult> ProgramRunner::run_block(const Block& block, std::ve
         // Checked before any cast to an integer: O and N numbers have at most 8 digits.
         const Word& first = block.words.front();
         if (!(first.value >= 0 && first.value <= max_label_number) || first.value != std::floor(first.value)) {
-            return InterpResult(alarm_at(block, first.column, alarm::format,
-                                         fmt::format("{} number {} is not a whole number 0-{}", first.letter,
-                                                     first.value, max_label_number)));
+            return InterpResult(alarm_at(
+                block, first.column, alarm::format,
+                fmt::format("{} number {} is not a whole number 0-{}", first.letter, first.value, max_label_number)));
         }
     }
     if (!block.words.empty() && block.words.front().letter == 'O') {
@@ -198,9 +194,9 @@ std::optional<InterpResult> ProgramRunner::run_block(const Block& block, std::ve
             return std::nullopt;
         }
         if (frames_.size() == 1) return finish_main(pending);
-        return InterpResult(alarm_at(block, 1, alarm::format,
-                                     fmt::format("program O{} runs into the next program without M99",
-                                                 current.program_number)));
+        return InterpResult(
+            alarm_at(block, 1, alarm::format,
+                     fmt::format("program O{} runs into the next program without M99", current.program_number)));
     }
     current.started = true;
     if (frames_.size() > 1 || !current.loops.empty() || current.jumped_back) {
@@ -279,16 +275,22 @@ void ProgramRunner::program_stop(const Block& block, std::vector<Move>& pending)
 
 std::optional<MacroValue> ProgramRunner::read_system(std::int64_t number) const {
     switch (number) {
-        case 3000: return MacroValue{};
+        case 3000:
+            return MacroValue{};
         case 3001: {
             double ms = (executor_.elapsed_s() - timer_ms_base_s_) * 1000.0;
             return MacroValue::of(std::fmod(std::floor(ms), timer_wrap_ms));
         }
-        case 3002: return MacroValue::of((executor_.elapsed_s() - timer_hours_base_s_) / seconds_per_hour);
-        case 4012: return MacroValue::of(modal_call_.program >= 0 ? 66 : 67);
-        case 4114: return MacroValue::of(static_cast<double>(last_sequence_));
-        case 4115: return MacroValue::of(static_cast<double>(frames_.back().program_number));
-        default: return executor_.read_system(number);
+        case 3002:
+            return MacroValue::of((executor_.elapsed_s() - timer_hours_base_s_) / seconds_per_hour);
+        case 4012:
+            return MacroValue::of(modal_call_.program >= 0 ? 66 : 67);
+        case 4114:
+            return MacroValue::of(static_cast<double>(last_sequence_));
+        case 4115:
+            return MacroValue::of(static_cast<double>(frames_.back().program_number));
+        default:
+            return executor_.read_system(number);
     }
 }
 
@@ -300,17 +302,23 @@ std::optional<SystemVariables::WriteError> ProgramRunner::write_system(std::int6
             double rounded = round_half_away(value);
             if (!(rounded >= 0 && rounded <= max_user_alarm)) {
                 return WriteError{alarm::argument_range, fmt::format("#3000 = {}: the user alarm number must be "
-                                                                     "0 to {}", value, max_user_alarm)};
+                                                                     "0 to {}",
+                                                                     value, max_user_alarm)};
             }
             auto n = static_cast<int>(rounded);
             const std::string& comment = current_block_->comment;
             std::string message = comment.empty() ? "user alarm" : comment;
             return WriteError{alarm::user_base + n, message};
         }
-        case 3001: timer_ms_base_s_ = executor_.elapsed_s() - value / 1000.0; return std::nullopt;
-        case 3002: timer_hours_base_s_ = executor_.elapsed_s() - value * seconds_per_hour; return std::nullopt;
+        case 3001:
+            timer_ms_base_s_ = executor_.elapsed_s() - value / 1000.0;
+            return std::nullopt;
+        case 3002:
+            timer_hours_base_s_ = executor_.elapsed_s() - value * seconds_per_hour;
+            return std::nullopt;
         case 3003:
-        case 3004: return std::nullopt;  // single-block / feed-hold suppression: nothing to suppress here
+        case 3004:
+            return std::nullopt;  // single-block / feed-hold suppression: nothing to suppress here
         case 3006: {
             // #3006 = 1 (MESSAGE): stop as M0 does, showing the message; cycle start goes on.
             if (current_block_->comment.empty()) {
@@ -319,7 +327,8 @@ std::optional<SystemVariables::WriteError> ProgramRunner::write_system(std::int6
             stop_requested_ = true;
             return std::nullopt;
         }
-        default: return executor_.write_system(number, value);
+        default:
+            return executor_.write_system(number, value);
     }
 }
 

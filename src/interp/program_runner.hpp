@@ -21,10 +21,10 @@ namespace nckit::interp {
 
 //! An active WHILE/DO range.
 struct LoopEntry {
-    int number = 0;              //!< m of DOm
-    std::uint64_t offset = 0;    //!< the DO block's line, where ENDm goes back to
+    int number = 0;            //!< m of DOm
+    std::uint64_t offset = 0;  //!< the DO block's line, where ENDm goes back to
     std::uint32_t line = 0;
-    std::uint32_t column = 0;    //!< where its WHILE / DO statement starts, for alarms
+    std::uint32_t column = 0;  //!< where its WHILE / DO statement starts, for alarms
 };
 
 //! One level of the call stack: the main program, a subprogram (M98) or a macro (G65/G66).
@@ -33,11 +33,11 @@ struct Frame {
     std::int64_t program_number = 0;  //!< #4115; 0 when the program has no O number
     std::uint64_t return_offset = 0;  //!< the caller's next line
     std::uint32_t return_line = 0;
-    int repeats_left = 1;             //!< L count still to run, this run included
-    bool own_locals = false;          //!< G65/G66: a fresh set of #1-#33
-    bool modal_call = false;          //!< started by G66 after a move
-    bool started = false;             //!< a block of it has been read (its O line is its header)
-    bool jumped_back = false;         //!< blocks now count against the runaway budget
+    int repeats_left = 1;      //!< L count still to run, this run included
+    bool own_locals = false;   //!< G65/G66: a fresh set of #1-#33
+    bool modal_call = false;   //!< started by G66 after a move
+    bool started = false;      //!< a block of it has been read (its O line is its header)
+    bool jumped_back = false;  //!< blocks now count against the runaway budget
     std::vector<LoopEntry> loops;
 };
 
@@ -145,17 +145,17 @@ private:
     std::map<std::pair<std::string, std::uint64_t>, std::optional<SequenceIndex>> sequence_indexes_;
     const Block* current_block_ = nullptr;  // the block being run (for #3000's message)
 
-    Block block_;            // the block being read
-    Block resolved_;         // its words with expressions evaluated
-    Block scan_;             // scratch for searches (GOTO, skipping a loop)
-    std::uint64_t line_offset_ = 0;   // where the block being run starts in its file
+    Block block_;                    // the block being read
+    Block resolved_;                 // its words with expressions evaluated
+    Block scan_;                     // scratch for searches (GOTO, skipping a loop)
+    std::uint64_t line_offset_ = 0;  // where the block being run starts in its file
     std::int64_t counted_blocks_ = 0;
     std::uint64_t moves_made_ = 0;          // moves and I/O events of the whole run
     std::uint64_t moves_at_main_pass_ = 0;  // moves_made_ when M99 last restarted the main program
-    std::int64_t last_sequence_ = 0;  // #4114
-    double timer_ms_base_s_ = 0;      // #3001 = (elapsed - base) in ms
-    double timer_hours_base_s_ = 0;   // #3002
-    bool stop_requested_ = false;     // #3006 = 1 (MESSAGE) in the statement just run
+    std::int64_t last_sequence_ = 0;        // #4114
+    double timer_ms_base_s_ = 0;            // #3001 = (elapsed - base) in ms
+    double timer_hours_base_s_ = 0;         // #3002
+    bool stop_requested_ = false;           // #3006 = 1 (MESSAGE) in the statement just run
     bool seen_tape_mark_ = false;
     bool seen_block_ = false;
     bool error_is_recoverable_ = false;

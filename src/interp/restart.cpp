@@ -70,14 +70,17 @@ void note_directions(const Move& move, std::array<int, axis_count>& side) {
 
 void note_io(const Io& io, const MachineConfig& machine, RestartIo& state) {
     switch (io.kind) {
-        case IoKind::tool_select: state.tool_selected = io.number; return;
+        case IoKind::tool_select:
+            state.tool_selected = io.number;
+            return;
         case IoKind::spindle_speed:
             state.speed_set = true;
             state.speed = io.value;
             state.constant_surface_speed = io.constant_surface_speed;
             state.rpm_clamp = io.rpm_clamp;
             return;
-        case IoKind::mcode: break;
+        case IoKind::mcode:
+            break;
     }
     const int m = io.number;
     if (m == 3 || m == 4 || m == 5) {
@@ -92,7 +95,8 @@ void note_io(const Io& io, const MachineConfig& machine, RestartIo& state) {
     } else if (m == 9) {
         state.mist = state.flood = false;
     } else if (machine.is_laser_on_mcode(m)) {
-        if (std::find(state.laser_on.begin(), state.laser_on.end(), m) == state.laser_on.end()) state.laser_on.push_back(m);
+        if (std::find(state.laser_on.begin(), state.laser_on.end(), m) == state.laser_on.end())
+            state.laser_on.push_back(m);
     } else if (machine.is_laser_off_mcode(m)) {
         state.laser_on.clear();
     }
@@ -102,7 +106,9 @@ std::string location_text(const SourceLocation& where) {
     return fmt::format("{}:{}", std::filesystem::path(where.file_name()).filename().string(), where.line);
 }
 
-const char* plane_code(Plane plane) { return plane == Plane::xy ? "G17" : plane == Plane::zx ? "G18" : "G19"; }
+const char* plane_code(Plane plane) {
+    return plane == Plane::xy ? "G17" : plane == Plane::zx ? "G18" : "G19";
+}
 
 void axis_word(std::string& out, Axis axis, double value, int decimals, double& worst) {
     out += ' ';
@@ -128,8 +134,8 @@ void frame_comments(std::string& out, const ModalView& s, const MachineConfig& m
     };
     fmt::format_to(std::back_inserter(out), "( program state: {} {} {} {}{} G{} offset{} )\n",
                    s.length_factor_mm == 1.0 ? "G21" : "G20", s.incremental ? "G91" : "G90", plane_code(s.plane),
-                   feed_mode_code(s.feed_mode, machine), s.diameter_mode ? " G7" : "",
-                   54 + s.work_system, vector_text(s.work_offset));
+                   feed_mode_code(s.feed_mode, machine), s.diameter_mode ? " G7" : "", 54 + s.work_system,
+                   vector_text(s.work_offset));
     fmt::format_to(std::back_inserter(out), "( G92{} G52{} )\n", vector_text(s.g92_offset), vector_text(s.g52_offset));
     fmt::format_to(std::back_inserter(out), "( tool length G{}{} H{}{}{} )\n", s.length_offset_code / 10,
                    s.length_offset_code % 10 != 0 ? ".1" : "", s.length_offset_h, vector_text(s.tool_offset),
@@ -139,7 +145,8 @@ void frame_comments(std::string& out, const ModalView& s, const MachineConfig& m
 
 void io_blocks(std::string& out, const RestartIo& io) {
     if (io.tool_in_spindle > 0) fmt::format_to(std::back_inserter(out), "T{} M6\n", io.tool_in_spindle);
-    if (io.tool_selected != io.tool_in_spindle && io.tool_selected > 0) fmt::format_to(std::back_inserter(out), "T{}\n", io.tool_selected);
+    if (io.tool_selected != io.tool_in_spindle && io.tool_selected > 0)
+        fmt::format_to(std::back_inserter(out), "T{}\n", io.tool_selected);
     if (io.speed_set) {
         if (io.constant_surface_speed) {
             out += "G96";
@@ -206,13 +213,13 @@ Result<RestartReport> write_restart(Interpreter& interpreter, const RestartTarge
     RestartReport report;
     report.state = interpreter.modal_view();
     std::array<int, axis_count> side{};
-    std::optional<AxisVector> position;   // where the last motion before the target ended
+    std::optional<AxisVector> position;  // where the last motion before the target ended
     std::optional<BlockKey> previous;
     std::int64_t blocks = 0, hits = 0, records = 0;
     bool previous_comp = false;
-    std::optional<Move> thread_start;     // first move of the run of G32/G33 moves just made
+    std::optional<Move> thread_start;  // first move of the run of G32/G33 moves just made
     const std::string* main_file = nullptr;
-    std::optional<Move> first;            // the target's first move
+    std::optional<Move> first;  // the target's first move
     for (;;) {
         InterpResult result = interpreter.next();
         if (auto* error = std::get_if<Diagnostic>(&result)) return std::move(*error);
@@ -226,7 +233,9 @@ Result<RestartReport> write_restart(Interpreter& interpreter, const RestartTarge
             previous = key;
             bool hit = false;
             switch (target.kind) {
-                case RestartTarget::Kind::block: hit = blocks == target.number; break;
+                case RestartTarget::Kind::block:
+                    hit = blocks == target.number;
+                    break;
                 case RestartTarget::Kind::line:
                     hit = key.file == main_file && move.where.line == target.number && ++hits == 1;
                     break;
@@ -236,9 +245,10 @@ Result<RestartReport> write_restart(Interpreter& interpreter, const RestartTarge
             }
             if (hit) {
                 if (view.cutter_compensation && previous_comp) {
-                    return error_at(move.where, "restart-cutter-comp",
-                                    "the block lies inside cutter compensation (G41/G42): its start depends on the "
-                                    "blocks before it; restart at the block that switches compensation on or after G40");
+                    return error_at(
+                        move.where, "restart-cutter-comp",
+                        "the block lies inside cutter compensation (G41/G42): its start depends on the "
+                        "blocks before it; restart at the block that switches compensation on or after G40");
                 }
                 if (std::holds_alternative<SyncMove>(move.what) && thread_start) {
                     return error_at(move.where, "restart-mid-thread",
@@ -272,8 +282,9 @@ Result<RestartReport> write_restart(Interpreter& interpreter, const RestartTarge
         }
     }
     if (!first) {
-        const char* what = target.kind == RestartTarget::Kind::block ? "block"
-                           : target.kind == RestartTarget::Kind::line ? "line" : "N";
+        const char* what = target.kind == RestartTarget::Kind::block  ? "block"
+                           : target.kind == RestartTarget::Kind::line ? "line"
+                                                                      : "N";
         std::string text = target.kind == RestartTarget::Kind::sequence
                                ? fmt::format("N{} is reached {} times, not {}", target.number, hits, target.occurrence)
                                : fmt::format("{} {} is not reached by a block that moves ({} blocks run)", what,

@@ -12,15 +12,15 @@ namespace nckit::interp {
 
 namespace {
 
-constexpr std::size_t max_call_depth = 10;   // subprogram levels in all, macros included
-constexpr std::size_t max_macro_depth = 4;   // G65/G66 levels
+constexpr std::size_t max_call_depth = 10;  // subprogram levels in all, macros included
+constexpr std::size_t max_macro_depth = 4;  // G65/G66 levels
 constexpr int max_repeats = 9999;
-constexpr int max_ijk_sets = 10;             // argument specification II: I1 J1 K1 .. I10 J10 K10
+constexpr int max_ijk_sets = 10;  // argument specification II: I1 J1 K1 .. I10 J10 K10
 
 //! Argument specification I: the local variable each letter fills (0: not an argument).
 constexpr std::array<int, 26> argument_variable = {
-    1, 2, 3, 7, 8, 9, 0, 11, 4, 5, 6, 0, 13,       // A B C D E F G H I J K L M
-    0, 0, 0, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26  // N O P Q R S T U V W X Y Z
+    1, 2, 3, 7,  8,  9,  0,  11, 4,  5,  6,  0,  13,  // A B C D E F G H I J K L M
+    0, 0, 0, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26   // N O P Q R S T U V W X Y Z
 };
 
 //! The whole number a P or L word names: rounded, so that a computed P[#1*1000] of
@@ -95,9 +95,10 @@ std::optional<Diagnostic> ProgramRunner::call(const Block& block, std::uint32_t 
         // Say where it looked: the usual cause is a library folder not given or the wrong one.
         const std::string where =
             options_.library_dir.empty()
-                ? fmt::format("looked in {}; no --library folder given (give one with --library DIR: files "
-                              "O{:04d}.nc, {:04d}.ngc or O{:04d})",
-                              *sources_[0].file(), program, program, program)
+                ? fmt::format(
+                      "looked in {}; no --library folder given (give one with --library DIR: files "
+                      "O{:04d}.nc, {:04d}.ngc or O{:04d})",
+                      *sources_[0].file(), program, program, program)
                 : fmt::format("looked in {} and in the library folder {} (files O{:04d}.nc, {:04d}.ngc, O{:04d})",
                               *sources_[0].file(), options_.library_dir.string(), program, program, program);
         return alarm_at(block, column, alarm::program_not_found,
@@ -178,13 +179,15 @@ std::optional<InterpResult> ProgramRunner::run_nc_block(const Block& block, std:
     int other_g = 0;
     for (const Word& w : nc->words) {
         if (w.letter == 'G' && (w.value == 65 || w.value == 66 || w.value == 67)) {
-            if (call_code != 0) return InterpResult(alarm_at(*nc, w.column, alarm::call_format, "two of G65 G66 G67 in one block"));
+            if (call_code != 0)
+                return InterpResult(alarm_at(*nc, w.column, alarm::call_format, "two of G65 G66 G67 in one block"));
             call_code = static_cast<int>(w.value);
             call_column = w.column;
         } else if (w.letter == 'G') {
             ++other_g;
         } else if (w.letter == 'M' && (w.value == 98 || w.value == 99)) {
-            if (m98 != nullptr || m99 != nullptr) return InterpResult(alarm_at(*nc, w.column, alarm::format, "M98 and M99 in one block"));
+            if (m98 != nullptr || m99 != nullptr)
+                return InterpResult(alarm_at(*nc, w.column, alarm::format, "M98 and M99 in one block"));
             (w.value == 98 ? m98 : m99) = &w;
         }
     }
@@ -211,7 +214,8 @@ std::optional<InterpResult> ProgramRunner::run_nc_block(const Block& block, std:
             modal_call_ = ModalCall{program, repeats, arguments};
             return std::nullopt;
         }
-        if (auto error = call(*nc, call_column, program, repeats, true, &arguments, false)) return InterpResult(std::move(*error));
+        if (auto error = call(*nc, call_column, program, repeats, true, &arguments, false))
+            return InterpResult(std::move(*error));
         return std::nullopt;
     }
     if (call_code == 67) modal_call_.program = -1;
@@ -240,7 +244,9 @@ std::optional<InterpResult> ProgramRunner::run_nc_block(const Block& block, std:
     }
     if (program_end) return InterpResult(ProgramEnd{});
     if (m98 != nullptr) {
-        if (p == nullptr) return InterpResult(alarm_at(*nc, m98->column, alarm::address_p_missing, "M98 needs P, the program number"));
+        if (p == nullptr)
+            return InterpResult(
+                alarm_at(*nc, m98->column, alarm::address_p_missing, "M98 needs P, the program number"));
         std::int64_t program = code_number(*p);
         int repeats = 1;
         if (l != nullptr) {
@@ -250,7 +256,8 @@ std::optional<InterpResult> ProgramRunner::run_nc_block(const Block& block, std:
             repeats = static_cast<int>(program / 10000);
             program %= 10000;
         }
-        if (auto error = call(*nc, m98->column, program, repeats, false, nullptr, false)) return InterpResult(std::move(*error));
+        if (auto error = call(*nc, m98->column, program, repeats, false, nullptr, false))
+            return InterpResult(std::move(*error));
         return std::nullopt;
     }
     if (m99 != nullptr) {

@@ -37,7 +37,8 @@ std::optional<Diagnostic> ProgramRunner::assign(const Block& block) {
 std::optional<Diagnostic> ProgramRunner::run_statement(const Block& block) {
     const MacroStatement& s = block.statement;
     switch (s.kind) {
-        case StatementKind::assign: return assign(block);
+        case StatementKind::assign:
+            return assign(block);
         case StatementKind::if_then: {
             bool holds = false;
             if (auto error = condition(block, holds)) return error;
@@ -65,9 +66,12 @@ std::optional<Diagnostic> ProgramRunner::run_statement(const Block& block) {
             if (auto error = condition(block, holds)) return error;
             return start_loop(block, holds);
         }
-        case StatementKind::do_loop: return start_loop(block, true);
-        case StatementKind::end_loop: return end_loop(block);
-        case StatementKind::none: break;
+        case StatementKind::do_loop:
+            return start_loop(block, true);
+        case StatementKind::end_loop:
+            return end_loop(block);
+        case StatementKind::none:
+            break;
     }
     return std::nullopt;
 }
@@ -219,7 +223,8 @@ std::optional<Diagnostic> ProgramRunner::jump_to_sequence(const Block& block, st
     if (const SequenceIndex* index = sequence_index()) {
         const std::optional<SequenceIndex::Target> target = index->find(number, here);
         if (!target) {
-            return alarm_at(block, column, alarm::sequence_not_found, fmt::format("sequence number N{} not found", number));
+            return alarm_at(block, column, alarm::sequence_not_found,
+                            fmt::format("sequence number N{} not found", number));
         }
         if (target->offset >= here) {
             // Leaving a loop forward passes its END: that loop and the ones inside it are over.

@@ -8,7 +8,9 @@ void SequenceIndex::add_number(std::int64_t number, std::uint64_t offset, std::u
     entries_.push_back(Entry{number, offset, line});
 }
 
-void SequenceIndex::add_loop_end(int loop, std::uint64_t offset) { loop_ends_[loop].push_back(offset); }
+void SequenceIndex::add_loop_end(int loop, std::uint64_t offset) {
+    loop_ends_[loop].push_back(offset);
+}
 
 void SequenceIndex::seal() {
     // Added in file order: a stable sort by number keeps each number's lines in file order.
@@ -22,7 +24,8 @@ std::optional<SequenceIndex::Target> SequenceIndex::find(std::int64_t number, st
     if (first == entries_.end() || first->number != number) return std::nullopt;
     const auto last =
         std::upper_bound(first, entries_.end(), number, [](std::int64_t n, const Entry& e) { return n < e.number; });
-    const auto ahead = std::lower_bound(first, last, from, [](const Entry& e, std::uint64_t o) { return e.offset < o; });
+    const auto ahead =
+        std::lower_bound(first, last, from, [](const Entry& e, std::uint64_t o) { return e.offset < o; });
     const Entry& hit = ahead != last ? *ahead : *first;
     return Target{hit.offset, hit.line};
 }

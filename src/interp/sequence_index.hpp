@@ -40,7 +40,7 @@ private:
         std::uint64_t offset;
         std::uint32_t line;
     };
-    std::vector<Entry> entries_;  // by number, then offset, once sealed
+    std::vector<Entry> entries_;                           // by number, then offset, once sealed
     std::map<int, std::vector<std::uint64_t>> loop_ends_;  // offsets in file order
 };
 

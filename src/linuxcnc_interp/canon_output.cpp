@@ -18,9 +18,12 @@ constexpr double unlimited_css_rpm = 1e30;
 
 CANON_PLANE canon_plane(Plane plane) {
     switch (plane) {
-        case Plane::xy: return CANON_PLANE_XY;
-        case Plane::zx: return CANON_PLANE_XZ;
-        case Plane::yz: return CANON_PLANE_YZ;
+        case Plane::xy:
+            return CANON_PLANE_XY;
+        case Plane::zx:
+            return CANON_PLANE_XZ;
+        case Plane::yz:
+            return CANON_PLANE_YZ;
     }
     return CANON_PLANE_XY;
 }
@@ -56,8 +59,8 @@ void CanonOutput::set_frame(const ModalView& view) {
     // interpreter reports G52 as a G92 offset as well).
     AxisVector shift = view.g92_offset + view.g52_offset;
     if (g92_offset_ != shift) {
-        SET_G92_OFFSET(unit(shift, 0), unit(shift, 1), unit(shift, 2), unit(shift, 3), unit(shift, 4),
-                       unit(shift, 5), unit(shift, 6), unit(shift, 7), unit(shift, 8));
+        SET_G92_OFFSET(unit(shift, 0), unit(shift, 1), unit(shift, 2), unit(shift, 3), unit(shift, 4), unit(shift, 5),
+                       unit(shift, 6), unit(shift, 7), unit(shift, 8));
         g92_offset_ = shift;
     }
     if (plane_ != view.plane) {
@@ -167,13 +170,19 @@ AfterMove CanonOutput::io(const Io& io) {
             tool_ = io.number;
             SELECT_TOOL(io.number);
             return AfterMove::go_on;
-        case IoKind::mcode: break;
+        case IoKind::mcode:
+            break;
     }
     switch (io.number) {
-        case 0: PROGRAM_STOP(); break;
-        case 1: OPTIONAL_PROGRAM_STOP(); break;
+        case 0:
+            PROGRAM_STOP();
+            break;
+        case 1:
+            OPTIONAL_PROGRAM_STOP();
+            break;
         case 2:
-        case 30: break;  // the program end that follows issues the calls
+        case 30:
+            break;  // the program end that follows issues the calls
         case 3:
         case 4:
             spindle_speed(io.value, io.constant_surface_speed, io.rpm_clamp);
@@ -191,8 +200,14 @@ AfterMove CanonOutput::io(const Io& io) {
         case 6:
             CHANGE_TOOL(tool_);
             return AfterMove::wait_for_motion;
-        case 7: MIST_ON(); mist_ = true; break;
-        case 8: FLOOD_ON(); flood_ = true; break;
+        case 7:
+            MIST_ON();
+            mist_ = true;
+            break;
+        case 8:
+            FLOOD_ON();
+            flood_ = true;
+            break;
         case 9:
             MIST_OFF();
             FLOOD_OFF();

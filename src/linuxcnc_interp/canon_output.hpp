@@ -60,7 +60,7 @@ private:
     std::optional<AxisVector> g92_offset_;   // G92 + G52, mm / deg
     std::optional<Plane> plane_;
     std::optional<FeedMode> feed_mode_;
-    std::optional<double> feed_rate_;        // program units per minute or per revolution
+    std::optional<double> feed_rate_;  // program units per minute or per revolution
     std::optional<PathControl> path_;
     std::optional<double> css_maximum_rpm_;  // 0: spindle in rpm (G97)
     std::optional<double> spindle_value_;    // rpm, or surface speed under G96

@@ -162,7 +162,9 @@ int NckitInterp::close() {
     return INTERP_OK;
 }
 
-int NckitInterp::exit() { return close(); }
+int NckitInterp::exit() {
+    return close();
+}
 
 int NckitInterp::reset() {
     pending_.reset();
@@ -242,9 +244,10 @@ void NckitInterp::issue_messages(const Move* before) {
 
 int NckitInterp::read(const char* line) {
     if (blank(line)) return INTERP_OK;
-    return fail(fmt::format("nckit interpreter: MDI is not supported ('{}'): run commands from a program "
-                            "in AUTO mode",
-                            line));
+    return fail(
+        fmt::format("nckit interpreter: MDI is not supported ('{}'): run commands from a program "
+                    "in AUTO mode",
+                    line));
 }
 
 int NckitInterp::execute(const char* line) {
@@ -252,9 +255,13 @@ int NckitInterp::execute(const char* line) {
     return read(line);
 }
 
-int NckitInterp::execute(const char* line, int) { return execute(line); }
+int NckitInterp::execute(const char* line, int) {
+    return execute(line);
+}
 
-int NckitInterp::synch() { return INTERP_OK; }
+int NckitInterp::synch() {
+    return INTERP_OK;
+}
 
 // ---- what LinuxCNC shows ---------------------------------------------------------------------
 
@@ -267,15 +274,21 @@ char* NckitInterp::line_text(char* buf, size_t buflen) {
     return copy_out(sequence_ > 0 ? fmt::format("N{}", sequence_) : std::string{}, buf, buflen);
 }
 
-char* NckitInterp::command(char* buf, size_t buflen) { return line_text(buf, buflen); }
+char* NckitInterp::command(char* buf, size_t buflen) {
+    return line_text(buf, buflen);
+}
 
 size_t NckitInterp::line_length() {
     char buf[32];
     return std::strlen(line_text(buf, sizeof buf));
 }
 
-char* NckitInterp::file_name(char* buf, size_t buflen) { return copy_out(program_path_, buf, buflen); }
-char* NckitInterp::file(char* buf, size_t buflen) { return copy_out(program_path_, buf, buflen); }
+char* NckitInterp::file_name(char* buf, size_t buflen) {
+    return copy_out(program_path_, buf, buflen);
+}
+char* NckitInterp::file(char* buf, size_t buflen) {
+    return copy_out(program_path_, buf, buflen);
+}
 
 // The call stack as far as the plug-in sees it: the file of the move last read, then the main
 // program when that is a called one (nckit does not hand out deeper levels).
@@ -286,11 +299,17 @@ char* NckitInterp::stack_name(int index, char* buf, size_t buflen) {
     return copy_out(name, buf, buflen);
 }
 
-int NckitInterp::sequence_number() { return sequence_; }
-int NckitInterp::line() { return line_; }
+int NckitInterp::sequence_number() {
+    return sequence_;
+}
+int NckitInterp::line() {
+    return line_;
+}
 // 0 in the main program, 1 in a called one (G65, M98, M-/G-code calls; the depth of nested
 // calls is not tracked): LinuxCNC's status shows it as the subroutine level.
-int NckitInterp::call_level() { return !move_file_.empty() && move_file_ != program_path_ ? 1 : 0; }
+int NckitInterp::call_level() {
+    return !move_file_.empty() && move_file_ != program_path_ ? 1 : 0;
+}
 
 void NckitInterp::active_g_codes(int g[ACTIVE_G_CODES]) {
     const ModalView& v = view_;
@@ -341,7 +360,9 @@ void NckitInterp::active_settings(double s[ACTIVE_SETTINGS]) {
 int NckitInterp::active_modes(int[ACTIVE_G_CODES], int[ACTIVE_M_CODES], double[ACTIVE_SETTINGS], StateTag const&) {
     return INTERP_ERROR;
 }
-int NckitInterp::restore_from_tag(StateTag const&) { return INTERP_OK; }
+int NckitInterp::restore_from_tag(StateTag const&) {
+    return INTERP_OK;
+}
 void NckitInterp::print_state_tag(StateTag const&) {}
 void NckitInterp::set_loglevel(int) {}
 // nckit's main program always restarts at M99, as a Fanuc control's does.

@@ -67,16 +67,16 @@ private:
     std::string program_path_;                // the opened program; empty: none
     std::optional<Interpreter> interpreter_;  // made at the first read (block delete is known then)
     std::optional<CanonOutput> canon_;
-    std::optional<Move> pending_;             // read, not yet executed
-    bool pending_end_ = false;                // read the program end, not yet executed
-    bool ended_ = false;                      // the end was executed: read() says so again
+    std::optional<Move> pending_;  // read, not yet executed
+    bool pending_end_ = false;     // read the program end, not yet executed
+    bool ended_ = false;           // the end was executed: read() says so again
     std::optional<Diagnostic> program_error_;
-    ModalView view_;                          // the modes of the pending move's block
+    ModalView view_;  // the modes of the pending move's block
 
-    std::string error_;                       // error_text's message
+    std::string error_;  // error_text's message
     int line_ = 0;
     int sequence_ = 0;
-    std::string move_file_;                   // the file of the move last read (a called program's)
+    std::string move_file_;  // the file of the move last read (a called program's)
 
     //! Operator messages the interpreter gave, waiting for the first move of their block or
     //! after it: messages come while a block is read, which may be before moves still queued

@@ -95,8 +95,10 @@ std::optional<std::string> read_plugin_settings(const std::filesystem::path& ini
             if (value != "0" && value != "1") return where(fmt::format("LINE_COMMENTS = {}: expected 0 or 1", value));
             settings.line_comments = value == "1";
         } else {
-            return where(fmt::format("unknown key {} (MACHINE, LIBRARY, RETAINED, MAX_BLOCKS, G64_TOLERANCE, "
-                                     "EXACT_PATH, TOOL_TABLE, LINE_COMMENTS)", key));
+            return where(
+                fmt::format("unknown key {} (MACHINE, LIBRARY, RETAINED, MAX_BLOCKS, G64_TOLERANCE, "
+                            "EXACT_PATH, TOOL_TABLE, LINE_COMMENTS)",
+                            key));
         }
     }
     return std::nullopt;

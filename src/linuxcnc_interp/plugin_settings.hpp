@@ -8,10 +8,10 @@
 namespace nckit::lcnc {
 
 struct PluginSettings {
-    std::filesystem::path machine_file;   //!< MACHINE: nckit machine TOML; empty: built-in mill
-    std::filesystem::path library_dir;    //!< LIBRARY: called programs, one file per O number
-    std::filesystem::path retained_file;  //!< RETAINED: keeps #500-#999 between runs; empty: none
-    std::int64_t max_blocks = 10'000'000; //!< MAX_BLOCKS: runaway budget of loops and calls
+    std::filesystem::path machine_file;    //!< MACHINE: nckit machine TOML; empty: built-in mill
+    std::filesystem::path library_dir;     //!< LIBRARY: called programs, one file per O number
+    std::filesystem::path retained_file;   //!< RETAINED: keeps #500-#999 between runs; empty: none
+    std::int64_t max_blocks = 10'000'000;  //!< MAX_BLOCKS: runaway budget of loops and calls
     //! G64_TOLERANCE: largest distance from the programmed corner, mm, when the program says G64
     //! without P (LinuxCNC's own G64 without P keeps no bound). 0: no bound.
     double g64_tolerance_mm = 0;

@@ -23,9 +23,9 @@ inline constexpr double min_blend_radius_mm = 1e-6;
 [[nodiscard]] bool tangent(const PathSegment& before, const PathSegment& after);
 
 struct Blend {
-    PathSegment arc;           //!< from before's new end to after's new start, tangent to both
-    double trim_mm = 0;        //!< mm cut from before's end and from after's start
-    double deviation_mm = 0;   //!< mm, distance of the arc's midpoint from the corner
+    PathSegment arc;          //!< from before's new end to after's new start, tangent to both
+    double trim_mm = 0;       //!< mm cut from before's end and from after's start
+    double deviation_mm = 0;  //!< mm, distance of the arc's midpoint from the corner
 };
 
 //! The blend of a corner between two lines whose measured length is XYZ and whose other axes

@@ -82,7 +82,9 @@ bool Lookahead::lowers_last_run(const WindowSegment& segment, ProfileLimits& low
 }
 
 //! Bounded so a run is never more than a quarter of the window (the forced commit keeps half).
-std::size_t Lookahead::max_run_segments() const { return std::max<std::size_t>(1, window_ / 4); }
+std::size_t Lookahead::max_run_segments() const {
+    return std::max<std::size_t>(1, window_ / 4);
+}
 
 double Lookahead::stop_speed(const WindowRun& run) const {
     if (run.stop_speed < 0 || full_passes_) run.stop_speed = max_end_speed(run.length, 0.0, run.limits, kind_);
@@ -175,8 +177,8 @@ void Lookahead::plan(std::size_t keep_at_most) {
         // of the two makes the bound grow with w, so bounds only rise as the window grows and a
         // committed speed stays stoppable. From any start at or below it, plan_profile's end
         // speed is never above the one asked for (it picks the highest reachable below).
-        double brake_from = next.bound > 0 ? max_end_speed(next.length, next.bound, next.limits, kind_)
-                                           : stop_speed(next);
+        double brake_from =
+            next.bound > 0 ? max_end_speed(next.length, next.bound, next.limits, kind_) : stop_speed(next);
         if (kind_ == ProfileKind::scurve && next.bound > 0) {
             brake_from = std::max(brake_from, stop_speed(next));
         }

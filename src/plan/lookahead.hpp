@@ -61,7 +61,7 @@ private:
 struct WindowEvent {
     PieceKind kind = PieceKind::io;
     Io io;
-    double dwell_s = 0;  //!< s, dwell only
+    double dwell_s = 0;       //!< s, dwell only
     bool wait_index = false;  //!< dwell until the spindle's next index pulse (G32/G33), not dwell_s
     SourceLocation where;
     std::int64_t sequence_number = -1;
@@ -83,12 +83,12 @@ struct WindowSegment {
 //! almost no speed over a few µm). The run plans with limits no higher than any of its
 //! segments' (see run_margin in lookahead.cpp).
 struct WindowRun {
-    std::size_t count = 0;    //!< segments
-    double length = 0;        //!< mm
+    std::size_t count = 0;  //!< segments
+    double length = 0;      //!< mm
     ProfileLimits limits;
     ProfileLimits first_limits;  //!< its first segment's (times run_margin); limits never drift far below
-    double junction_max = 0;  //!< mm/s at its end
-    double bound = 0;         //!< mm/s, from the backward pass: the end speed it can still stop from
+    double junction_max = 0;     //!< mm/s at its end
+    double bound = 0;            //!< mm/s, from the backward pass: the end speed it can still stop from
     //! The bound no longer depends on the window's provisional stop at its end (see plan()).
     bool bound_final = false;
     //! mm/s, max_end_speed(length, 0, limits) once computed, < 0 until then; reset whenever

@@ -26,9 +26,12 @@ struct PlaneIndex {
 
 PlaneIndex plane_index(Plane plane) {
     switch (plane) {
-        case Plane::xy: return {0, 1, 2};
-        case Plane::zx: return {2, 0, 1};
-        case Plane::yz: return {1, 2, 0};
+        case Plane::xy:
+            return {0, 1, 2};
+        case Plane::zx:
+            return {2, 0, 1};
+        case Plane::yz:
+            return {1, 2, 0};
     }
     return {0, 1, 2};
 }
@@ -89,7 +92,7 @@ PathPoint point_at(const PathSegment& g, double s) {
         const double r2 = r1 * k;
         const double r3 = r2 * k;
         for (std::size_t i = 0; i < 3; ++i) {
-            const double radial = c * g.u[i] + sn * g.v[i];      // (cos, sin)
+            const double radial = c * g.u[i] + sn * g.v[i];       // (cos, sin)
             const double tangential = -sn * g.u[i] + c * g.v[i];  // its θ-derivative
             out.position[i] += g.radius_mm * radial;
             out.d1[i] += r1 * tangential;

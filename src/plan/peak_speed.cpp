@@ -33,9 +33,7 @@ ValueSlope half_distance(double v, double dv0, double u, const Rates& r) {
 Peak solve_peak(double distance_mm, double v_low, double v_high, const Rates& r) {
     const double gap = v_high - v_low;
     // Distance of the whole profile for a rise w above v_high; strictly increasing in w.
-    auto distance_at = [&](double w) {
-        return change_distance(v_low, gap + w, r) + change_distance(v_high, w, r);
-    };
+    auto distance_at = [&](double w) { return change_distance(v_low, gap + w, r) + change_distance(v_high, w, r); };
 
     const double w_max = std::max(0.0, r.v_max - v_high);
     const double at_max = distance_at(w_max);
@@ -90,8 +88,8 @@ Peak solve_peak(double distance_mm, double v_low, double v_high, const Rates& r)
     const double u_hi = std::sqrt(hi);
     // Start where the chord through the interval's ends meets the distance.
     const double u_start = u_lo + (u_hi - u_lo) * (distance_mm - at_lo) / (at_hi - at_lo);
-    const double u = solve_increasing(residual, u_lo, u_hi, std::clamp(u_start, u_lo, u_hi),
-                                      distance_tolerance * distance_mm);
+    const double u =
+        solve_increasing(residual, u_lo, u_hi, std::clamp(u_start, u_lo, u_hi), distance_tolerance * distance_mm);
     return {std::min(u * u, w_max), 0.0};
 }
 

@@ -35,8 +35,8 @@ struct Planner::Impl {
         //! transitions at its ends, and then its own limits never matter.
         std::optional<ProfileLimits> limits;
         double normal_share = 0.5;  //!< of the acceleration, for the curvature term
-        double feed_mm_s = 0;    //!< +inf for rapids
-        bool blendable = false;  //!< a G1 line or a G2/G3 arc: its ends may be rounded
+        double feed_mm_s = 0;       //!< +inf for rapids
+        bool blendable = false;     //!< a G1 line or a G2/G3 arc: its ends may be rounded
         PathControl control;
         SourceLocation where;
         std::int64_t sequence_number = -1;
@@ -57,8 +57,8 @@ struct Planner::Impl {
     std::array<Pending, 2> slots;
     Pending* pending = nullptr;  //!< one of slots, or none
     std::vector<WindowEvent> pending_events;
-    AxisVector position;  //!< where the path added so far ends
-    bool have_position = false;            //!< a motion has told where the machine is
+    AxisVector position;                      //!< where the path added so far ends
+    bool have_position = false;               //!< a motion has told where the machine is
     std::vector<WindowEvent> leading_events;  //!< events before the first motion: place unknown
     Diagnostics diagnostics;
     SpindleCommand spindle;         //!< the spindle as the moves pushed so far leave it
@@ -89,9 +89,11 @@ struct Planner::Impl {
         if (!pending) return;
         Pending& p = *pending;
         if (p.entry) {
-            const ProfileLimits limits = segment_limits(p.entry->curve, machine, p.entry_feed_mm_s, kind,
-                                                         kind == ProfileKind::trapezoid ? trapezoid_blend_normal_share : 0.5);
-            add_segment(std::move(p.entry->curve), limits, limits.max_velocity, p.entry_where, p.entry_number, true, {});
+            const ProfileLimits limits =
+                segment_limits(p.entry->curve, machine, p.entry_feed_mm_s, kind,
+                               kind == ProfileKind::trapezoid ? trapezoid_blend_normal_share : 0.5);
+            add_segment(std::move(p.entry->curve), limits, limits.max_velocity, p.entry_where, p.entry_number, true,
+                        {});
             p.entry.reset();
         }
         if (p.path.length > min_trimmed_length) {
@@ -131,14 +133,15 @@ struct Planner::Impl {
             const bool jerk_limited = kind == ProfileKind::scurve;
             if (p.control.exact_stop) {
                 release_pending(0.0);
-            } else if (jerk_limited ? plan_detail::smooth_join(p.path, next.path,
-                                                               plan_detail::smooth_direction_tolerance, true)
-                                    : plan_detail::tangent(p.path, next.path)) {
+            } else if (jerk_limited
+                           ? plan_detail::smooth_join(p.path, next.path, plan_detail::smooth_direction_tolerance, true)
+                           : plan_detail::tangent(p.path, next.path)) {
                 release_pending(limits_of(p).max_velocity);
             } else if (p.blendable && next.blendable) {
-                const double tolerance = p.control.tolerance_mm > 0 ? p.control.tolerance_mm
-                                                                    : options.default_blend_tolerance_mm;
-                const bool rounded = (!jerk_limited && blend_corner(p, next, tolerance)) || transition(p, next, tolerance);
+                const double tolerance =
+                    p.control.tolerance_mm > 0 ? p.control.tolerance_mm : options.default_blend_tolerance_mm;
+                const bool rounded =
+                    (!jerk_limited && blend_corner(p, next, tolerance)) || transition(p, next, tolerance);
                 if (!rounded) {
                     release_pending(0.0);
                 }
@@ -223,9 +226,9 @@ struct Planner::Impl {
         const AxisVector moving = path.shape == SegmentShape::line ? path.rate : derivative_bounds(path).d1;
         for (std::size_t i = 0; i < axis_count; ++i) {
             if (moving[i] != 0 && machine.find(static_cast<Axis>(i)) == nullptr) {
-                diagnostics.push_back(error_at(where, "unknown-axis",
-                                               std::string("move of axis ") + axis_letters[i] +
-                                                   ", which the machine does not have"));
+                diagnostics.push_back(
+                    error_at(where, "unknown-axis",
+                             std::string("move of axis ") + axis_letters[i] + ", which the machine does not have"));
                 return false;
             }
         }
@@ -245,9 +248,8 @@ struct Planner::Impl {
         Pending& next = fresh_slot();
         // A trapezoid arc runs at constant speed where it is slowest: like a blend, it gives most
         // of the acceleration to the turning (the rest still changes speed along it).
-        const double share = kind == ProfileKind::trapezoid && path.shape == SegmentShape::arc
-                                 ? trapezoid_blend_normal_share
-                                 : 0.5;
+        const double share =
+            kind == ProfileKind::trapezoid && path.shape == SegmentShape::arc ? trapezoid_blend_normal_share : 0.5;
         next.normal_share = share;
         next.full_length = path.length;
         next.path = std::move(path);
@@ -298,8 +300,9 @@ struct Planner::Impl {
     void sync_motion(const SyncMove& sync, const Move& move, bool after_sync) {
         const double rpm = spindle.signed_rpm(machine.spindle);
         if (rpm == 0.0) {
-            diagnostics.push_back(error_at(move.where, "sync-spindle-stopped",
-                                           "G32/G33 needs the spindle turning (M3 or M4 with S): no index pulse to wait for"));
+            diagnostics.push_back(
+                error_at(move.where, "sync-spindle-stopped",
+                         "G32/G33 needs the spindle turning (M3 or M4 with S): no index pulse to wait for"));
             return;
         }
         PathSegment path = make_line(sync.from, sync.to);
@@ -313,8 +316,7 @@ struct Planner::Impl {
         const ProfileLimits limits = segment_limits(path, machine, speed_mm_s, kind);
         // The axes must keep up with the spindle's fastest moment, not only its mean.
         const double peak_mm_s = sync.feed.mm_per_rev * std::abs(rpm) * (1.0 + machine.spindle.ripple_fraction) / 60.0;
-        const ProfileLimits axis_limits =
-            segment_limits(path, machine, std::numeric_limits<double>::infinity(), kind);
+        const ProfileLimits axis_limits = segment_limits(path, machine, std::numeric_limits<double>::infinity(), kind);
         if (peak_mm_s > axis_limits.max_velocity * (1.0 + 1e-9)) {
             diagnostics.push_back(error_at(
                 move.where, "sync-too-fast",
@@ -350,8 +352,8 @@ struct Planner::Impl {
         const bool after_sync = std::exchange(last_motion_sync, false);
         if (const auto* line = std::get_if<Line>(&move.what)) {
             locate(line->from);
-            const double feed = line->rapid ? std::numeric_limits<double>::infinity()
-                                            : feed_mm_s(line->feed) * override_factor;
+            const double feed =
+                line->rapid ? std::numeric_limits<double>::infinity() : feed_mm_s(line->feed) * override_factor;
             motion(make_line(line->from, line->to), feed, !line->rapid, line->path, move);
         } else if (const auto* arc = std::get_if<Arc>(&move.what)) {
             locate(arc->from);
@@ -394,7 +396,9 @@ Planner::~Planner() = default;
 Planner::Planner(Planner&&) noexcept = default;
 Planner& Planner::operator=(Planner&&) noexcept = default;
 
-void Planner::push(const Move& move) { impl_->push(move); }
+void Planner::push(const Move& move) {
+    impl_->push(move);
+}
 
 void Planner::finish() {
     impl_->release_pending(0.0);
@@ -410,7 +414,9 @@ bool Planner::pop(TrajectoryPiece& piece) {
     return true;
 }
 
-const Diagnostics& Planner::diagnostics() const { return impl_->diagnostics; }
+const Diagnostics& Planner::diagnostics() const {
+    return impl_->diagnostics;
+}
 
 PlanResult plan_moves(const std::vector<Move>& moves, const MachineConfig& machine, const PlannerOptions& options) {
     PlanResult result;

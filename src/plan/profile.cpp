@@ -16,8 +16,12 @@ using plan_detail::Rates;
 namespace {
 
 //! Speeds outside [0, v_max] (or NaN) are outside every profile; the nearest allowed value.
-double clean_speed(double v, const Rates& r) { return v > 0 ? std::min(v, r.v_max) : 0.0; }
-double clean_distance(double d) { return d > 0 ? d : 0.0; }
+double clean_speed(double v, const Rates& r) {
+    return v > 0 ? std::min(v, r.v_max) : 0.0;
+}
+double clean_distance(double d) {
+    return d > 0 ? d : 0.0;
+}
 
 bool fits(double d, double v0, double v1, const Rates& r) {
     return change_distance(std::min(v0, v1), std::abs(v1 - v0), r) <= d;

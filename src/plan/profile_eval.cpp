@@ -62,8 +62,8 @@ ProfileState Profile::at(double t_s) const {
         const double j = phase.jerk;
         if (t_s >= phase_end_s - phase.duration_s || i == 0) {
             const double s = std::min(phase_end_s - t_s, phase.duration_s);
-            return {start_position + p - s * (v - s * (0.5 * a - s * j / 6.0)), v - s * (a - 0.5 * s * j),
-                    a - s * j, j};
+            return {start_position + p - s * (v - s * (0.5 * a - s * j / 6.0)), v - s * (a - 0.5 * s * j), a - s * j,
+                    j};
         }
         const double tau = phase.duration_s;
         p -= tau * (v - tau * (0.5 * a - tau * j / 6.0));

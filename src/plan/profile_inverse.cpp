@@ -27,9 +27,7 @@ double ProfileWalker::time_at(double position_mm) {
             // profile time (the resolution of a double there).
             const double x0 =
                 v_ + 0.5 * a * tau > 0 ? std::clamp((target - p_) / std::max(v_, 1e-300), 0.0, tau) : 0.5 * tau;
-            const auto residual = [&](double x) {
-                return ValueSlope{pos(x) - target, v_ + x * (a + 0.5 * x * j)};
-            };
+            const auto residual = [&](double x) { return ValueSlope{pos(x) - target, v_ + x * (a + 0.5 * x * j)}; };
             const double x =
                 bracketed_newton(residual, 0.0, tau, x0,
                                  NewtonStop{.bracket_tolerance = 1e-16 * (phase_start_s_ + tau), .max_iterations = 100})

@@ -107,7 +107,9 @@ std::array<double, 5> slope_control_points(double c1, double c2, double c3, doub
 //! on a gentle transition it is then practically exact, and sampling is saved. An axis with a
 //! small slope never limits the speed or the acceleration much, so 1e-3 absolute is enough there.
 constexpr double tight_hull = 1e-3;
-bool tight(double hull, double ends) { return hull <= ends + tight_hull * std::max(ends, 1.0); }
+bool tight(double hull, double ends) {
+    return hull <= ends + tight_hull * std::max(ends, 1.0);
+}
 
 }  // namespace
 
@@ -161,8 +163,8 @@ DerivativeBounds quintic_bounds(const PathSegment& g) {
         const double s = h * k;
         double speed2 = 0;
         for (std::size_t i = 0; i < 3; ++i) {
-            const double d1 = g.rate[i] + s * (2 * g.poly[0][i] + s * (3 * g.poly[1][i] + s * (4 * g.poly[2][i] +
-                                                                                                 s * 5 * g.poly[3][i])));
+            const double d1 = g.rate[i] + s * (2 * g.poly[0][i] +
+                                               s * (3 * g.poly[1][i] + s * (4 * g.poly[2][i] + s * 5 * g.poly[3][i])));
             speed2 += d1 * d1;
         }
         speed = std::max(speed, std::sqrt(speed2));

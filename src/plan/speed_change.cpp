@@ -14,7 +14,9 @@ namespace {
 constexpr double distance_tolerance = 1e-14;
 
 //! mm, braking from v by dv.
-double braking_distance(double v, double dv, const Rates& r) { return change_distance(v - dv, dv, r); }
+double braking_distance(double v, double dv, const Rates& r) {
+    return change_distance(v - dv, dv, r);
+}
 
 }  // namespace
 

@@ -51,7 +51,9 @@ double mean_rpm(double rpm, const SpindleConfig& config) {
     return std::abs(rpm) * std::sqrt(1.0 - r * r);
 }
 
-double SpindleModel::mean_rpm() const { return nckit::mean_rpm(rpm_, config_); }
+double SpindleModel::mean_rpm() const {
+    return nckit::mean_rpm(rpm_, config_);
+}
 
 // In the turning sense ψ (ψ = θ forward, −θ backward) the ripple reads r'·sin(kψ + φ') with
 // r' = r, φ' = φ forward and r' = −r, φ' = −φ backward.
@@ -85,8 +87,9 @@ double SpindleModel::angle_deg(double t_s) const {
         return ValueSlope{travel_time_s(start, psi) - dt, 1.0 / speed_deg_s};
     };
     const double bracket_deg = 1e-12 * std::max(1.0, std::abs(guess));
-    const double psi =
-        bracketed_newton(residual, low, high, guess, NewtonStop{.bracket_tolerance = bracket_deg, .max_iterations = 100}).x;
+    const double psi = bracketed_newton(residual, low, high, guess,
+                                        NewtonStop{.bracket_tolerance = bracket_deg, .max_iterations = 100})
+                           .x;
     return sense * psi;
 }
 

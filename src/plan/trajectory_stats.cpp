@@ -39,8 +39,7 @@ void PeakTracker::add(const TrajectoryPiece& piece) {
     }
 }
 
-TraceWriter::TraceWriter(const MachineConfig& machine, double period_s)
-    : sampler_(period_s, SamplerEnd::within_cycle) {
+TraceWriter::TraceWriter(const MachineConfig& machine, double period_s) : sampler_(period_s, SamplerEnd::within_cycle) {
     for (const AxisConfig& axis : machine.axes) axes_.insert(axis.axis);
 }
 
@@ -60,7 +59,8 @@ void TraceWriter::row(const TrajectorySample& s, std::string& out) const {
     for (const AxisVector* values : {&s.position, &s.velocity, &s.acceleration, &s.jerk}) {
         for (std::size_t i = 0; i < axis_count; ++i) {
             // + 0.0 turns -0 into 0: a trace read by people and plotting tools.
-            if (axes_.contains(static_cast<Axis>(i))) fmt::format_to(std::back_inserter(out), ",{}", (*values)[i] + 0.0);
+            if (axes_.contains(static_cast<Axis>(i)))
+                fmt::format_to(std::back_inserter(out), ",{}", (*values)[i] + 0.0);
         }
     }
     out += '\n';

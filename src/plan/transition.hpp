@@ -23,12 +23,12 @@ inline constexpr double smooth_direction_tolerance = 1e-9;
 inline constexpr double smooth_curvature_tolerance = 1e-7;
 
 struct Transition {
-    PathSegment curve;        //!< quintic from before's new end to after's new start
-    double trim_before = 0;   //!< s cut from before's end
-    double trim_after = 0;    //!< s cut from after's start
-    double deviation_mm = 0;  //!< mm, largest distance of the curve from the programmed path found
-    PathPoint start;          //!< the state the curve leaves from (on before)
-    PathPoint end;            //!< and arrives at (on after)
+    PathSegment curve;            //!< quintic from before's new end to after's new start
+    double trim_before = 0;       //!< s cut from before's end
+    double trim_after = 0;        //!< s cut from after's start
+    double deviation_mm = 0;      //!< mm, largest distance of the curve from the programmed path found
+    PathPoint start;              //!< the state the curve leaves from (on before)
+    PathPoint end;                //!< and arrives at (on after)
     PathSegment replaced_before;  //!< the programmed path it replaces: before's tail,
     PathSegment replaced_after;   //!< and after's head
     bool chained = false;         //!< starts with a ChainStart's curvature (make_transition)
@@ -65,7 +65,7 @@ void apply(Transition& transition, const Rebuilt& rebuilt);
 //! instead of the line's own 0, the chain follows the curve the polyline samples, and its speed
 //! is set by that curve's radius rather than by a curvature pulse at every vertex.
 struct ChainStart {
-    double entry_length = 0;                //!< L1, the parameter length of the transition into before
+    double entry_length = 0;                 //!< L1, the parameter length of the transition into before
     std::array<double, 3> entry_start_d1{};  //!< q'_in, its direction where it leaves the move before
 };
 

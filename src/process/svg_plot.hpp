@@ -11,7 +11,7 @@
 
 #include <fmt/format.h>
 
-namespace nckit::detail {
+namespace nckit::process_detail {
 
 //! A round step near span / count, at least that: 1, 2 or 5 times a power of ten.
 inline double tick_step(double span, double count) {
@@ -55,4 +55,4 @@ inline const char* line_colour(std::size_t index) {
     return colours[index % colours.size()];
 }
 
-}  // namespace nckit::detail
+}  // namespace nckit::process_detail

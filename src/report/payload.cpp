@@ -10,7 +10,9 @@ namespace nckit {
 
 namespace {
 
-void pad8(std::string& s) { s.append((8 - s.size() % 8) % 8, '\0'); }
+void pad8(std::string& s) {
+    s.append((8 - s.size() % 8) % 8, '\0');
+}
 
 template <typename T>
 void put(std::string& out, T value) {

@@ -13,7 +13,9 @@ namespace {
 
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 
-std::string um(double value) { return fmt::format("{:.4g} µm", value); }
+std::string um(double value) {
+    return fmt::format("{:.4g} µm", value);
+}
 
 }  // namespace
 
@@ -23,15 +25,16 @@ ReportPage piston_page(const cam::PistonJob& job, const PistonSimulation& simula
     page.kind = "piston";
     page.title = fmt::format("nckit piston: {}", job_name);
     page.figures = {
-        {"spindle", fmt::format("{:g} rpm, {} counts per turn ({:.6g} Hz control)", job.rpm, job.encoder_counts,
-                                f.tick_rate_hz)},
+        {"spindle",
+         fmt::format("{:g} rpm, {} counts per turn ({:.6g} Hz control)", job.rpm, job.encoder_counts, f.tick_rate_hz)},
         {"uncompensated", fmt::format("P-V {}, RMS {}", um(f.uncompensated.pv_um), um(f.uncompensated.rms_um))},
         {"feedforward", fmt::format("P-V {}, RMS {}", um(f.feedforward.pv_um), um(f.feedforward.rms_um))},
         {"feedforward + learning", fmt::format("P-V {}, RMS {}", um(f.learning.pv_um), um(f.learning.rms_um))},
         {"learning settled", simulation.settled_turn < 0
                                  ? std::string("never within 1 µm per turn")
                                  : fmt::format("every turn within 1 µm from turn {}", simulation.settled_turn)},
-        {"stroke used", fmt::format("{:.4f} of {:.4f} mm", simulation.fit.peak_displacement_mm, simulation.fit.limit_mm)},
+        {"stroke used",
+         fmt::format("{:.4f} of {:.4f} mm", simulation.fit.peak_displacement_mm, simulation.fit.limit_mm)},
     };
 
     // Polar section at the middle station: base circle for D/2, the deviation magnified so the
@@ -54,15 +57,24 @@ ReportPage piston_page(const cam::PistonJob& job, const PistonSimulation& simula
         circle.x.push_back(base * std::cos(a));
         circle.y.push_back(base * std::sin(a));
     }
-    page.charts.push_back({fmt::format("section at Z {:g} mm, to scale with the deviation from D/2 magnified {:g}×", z,
-                                       magnify),
-                           "mm", "mm", true, {circle, section}, {}});
+    page.charts.push_back(
+        {fmt::format("section at Z {:g} mm, to scale with the deviation from D/2 magnified {:g}×", z, magnify),
+         "mm",
+         "mm",
+         true,
+         {circle, section},
+         {}});
 
-    ReportChart turns{"peak to valley of the error in each turn (turn 0 is the first air turn)", "turn", "µm (log)",
-                      false, {}, {{"1 µm goal", 1.0}}};
+    ReportChart turns{"peak to valley of the error in each turn (turn 0 is the first air turn)",
+                      "turn",
+                      "µm (log)",
+                      false,
+                      {},
+                      {{"1 µm goal", 1.0}}};
     turns.log_y = true;
-    for (const auto& [name, run] : {std::pair{"uncompensated", &f.uncompensated}, std::pair{"feedforward", &f.feedforward},
-                                    std::pair{"feedforward + learning", &f.learning}}) {
+    for (const auto& [name, run] :
+         {std::pair{"uncompensated", &f.uncompensated}, std::pair{"feedforward", &f.feedforward},
+          std::pair{"feedforward + learning", &f.learning}}) {
         ChartSeries s{name, {}, {}};
         for (std::size_t i = 0; i < run->turn_pv_um.size(); ++i) {
             s.x.push_back(static_cast<double>(i));
@@ -115,8 +127,12 @@ ReportPage crosshatch_page(const CrosshatchPlan& plan, const CrosshatchScan& sca
             if (span == 0) break;
         }
     }
-    page.charts.push_back({"the bore unrolled: laser tracks over the wall (to scale)", "along the circumference (mm)",
-                           "depth Z (mm)", true, {down, up}, {}});
+    page.charts.push_back({"the bore unrolled: laser tracks over the wall (to scale)",
+                           "along the circumference (mm)",
+                           "depth Z (mm)",
+                           true,
+                           {down, up},
+                           {}});
     return page;
 }
 
@@ -152,9 +168,12 @@ ReportPage eccentric_page(const EccentricReport& report, const std::string& job_
     }
     page.charts.push_back({"section (to scale)", "mm", "mm", true, {drawing, cut, axis}, {}});
     page.charts.push_back({"the X axis's cam against the spindle angle", "θ (deg)", "a (mm)", false, {cam}, {}});
-    ReportChart offsets{"centre offset of the cut section", "run (0: without, 1: with feedforward)", "µm", false, {}, {}};
-    offsets.series.push_back({"centre offset", {0, 1}, {report.uncompensated.center_offset_um, report.compensated.center_offset_um}});
-    offsets.series.push_back({"roundness", {0, 1}, {report.uncompensated.roundness_um, report.compensated.roundness_um}});
+    ReportChart offsets{
+        "centre offset of the cut section", "run (0: without, 1: with feedforward)", "µm", false, {}, {}};
+    offsets.series.push_back(
+        {"centre offset", {0, 1}, {report.uncompensated.center_offset_um, report.compensated.center_offset_um}});
+    offsets.series.push_back(
+        {"roundness", {0, 1}, {report.uncompensated.roundness_um, report.compensated.roundness_um}});
     page.charts.push_back(std::move(offsets));
     return page;
 }
@@ -166,15 +185,19 @@ ReportPage notch_page(const NotchJob& job, const std::string& program_name) {
     page.figures.push_back({"cuts", std::to_string(job.cuts.size())});
     for (std::size_t i = 0; i < job.cuts.size(); ++i) {
         const NotchCut& cut = job.cuts[i];
-        page.figures.push_back({fmt::format("cut {} (line {})", i + 1, cut.where.line),
-                                fmt::format("{:.4f} mm at F{}: before min {:.1f} mm/min, after min {:.1f} mm/min; run-up "
-                                            "{:.4f} mm, overrun {:.4f} mm",
-                                            cut.length_mm, cut.feed_mm_min, cut.before.min_mm_min,
-                                            cut.after.min_mm_min, cut.run_up_mm, cut.overrun_mm)});
+        page.figures.push_back(
+            {fmt::format("cut {} (line {})", i + 1, cut.where.line),
+             fmt::format("{:.4f} mm at F{}: before min {:.1f} mm/min, after min {:.1f} mm/min; run-up "
+                         "{:.4f} mm, overrun {:.4f} mm",
+                         cut.length_mm, cut.feed_mm_min, cut.before.min_mm_min, cut.after.min_mm_min, cut.run_up_mm,
+                         cut.overrun_mm)});
         if (i >= 6) continue;  // the figures list every cut; charts for the first six
         ReportChart chart{fmt::format("cut {} (line {}): planned speed over the cut", i + 1, cut.where.line),
-                          cut.profile_axis ? fmt::format("{} (mm)", letter(*cut.profile_axis)) : "s (mm)", "mm/min",
-                          false, {}, {{"F", cut.feed_mm_min}}};
+                          cut.profile_axis ? fmt::format("{} (mm)", letter(*cut.profile_axis)) : "s (mm)",
+                          "mm/min",
+                          false,
+                          {},
+                          {{"F", cut.feed_mm_min}}};
         for (const auto& [name, speed] : {std::pair{"before", &cut.before}, std::pair{"after rewriting", &cut.after}}) {
             ChartSeries s{name, {}, {}};
             for (const auto& p : speed->profile) {

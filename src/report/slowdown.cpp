@@ -4,12 +4,18 @@ namespace nckit {
 
 std::string_view slowdown_name(Slowdown slowdown) {
     switch (slowdown) {
-        case Slowdown::none: return "none";
-        case Slowdown::corner: return "corner";
-        case Slowdown::arc_limit: return "arc limit";
-        case Slowdown::short_segment: return "short segment";
-        case Slowdown::exact_stop: return "exact stop";
-        case Slowdown::axis_limit: return "axis limit";
+        case Slowdown::none:
+            return "none";
+        case Slowdown::corner:
+            return "corner";
+        case Slowdown::arc_limit:
+            return "arc limit";
+        case Slowdown::short_segment:
+            return "short segment";
+        case Slowdown::exact_stop:
+            return "exact stop";
+        case Slowdown::axis_limit:
+            return "axis limit";
     }
     return "none";
 }
@@ -23,9 +29,12 @@ Slowdown classify_slowdown(const SlowdownFacts& facts) {
     // speed the move could not get away from in its length.
     const Junction held = facts.start_mm_s <= facts.end_mm_s ? facts.start : facts.end;
     switch (held) {
-        case Junction::exact_stop: return Slowdown::exact_stop;
-        case Junction::corner: return Slowdown::corner;
-        case Junction::tangent: return Slowdown::short_segment;
+        case Junction::exact_stop:
+            return Slowdown::exact_stop;
+        case Junction::corner:
+            return Slowdown::corner;
+        case Junction::tangent:
+            return Slowdown::short_segment;
     }
     return Slowdown::short_segment;
 }

@@ -31,15 +31,15 @@ struct ToolPathRecorder::Impl {
     double speed_tolerance_mm_s = 0;
     ToolPathReport report;
     std::map<const std::string*, std::uint32_t> file_index;
-    bool first_file_seen = false;       //!< a move of options.first_file has come
-    std::deque<std::size_t> awaiting;   //!< moves with length, waiting for their piece
-    std::vector<bool> exact_stop;       //!< per move: G61/G9 at its end
-    std::size_t finalized = 0;          //!< moves before this have their vertices and times
+    bool first_file_seen = false;      //!< a move of options.first_file has come
+    std::deque<std::size_t> awaiting;  //!< moves with length, waiting for their piece
+    std::vector<bool> exact_stop;      //!< per move: G61/G9 at its end
+    std::size_t finalized = 0;         //!< moves before this have their vertices and times
     std::optional<OpenMove> open;
-    std::optional<Junction> boundary;   //!< what happened since the last main piece, if anything
+    std::optional<Junction> boundary;  //!< what happened since the last main piece, if anything
     PeakTracker peaks;
     TimeSampler sampler;
-    double time_s = 0;                  //!< end of the last piece
+    double time_s = 0;  //!< end of the last piece
 
     Impl(const MachineConfig& m, ProfileKind k, ToolPathOptions o)
         : machine(m), kind(k), options(o), sampler(m, o.max_samples) {
@@ -154,8 +154,8 @@ struct ToolPathRecorder::Impl {
         m.peak_mm_s = pts.peak_mm_s;
         next.facts.feed_mm_s = m.feed_mm_s;
         next.facts.arc = piece.segment.shape == SegmentShape::arc;
-        next.facts.limit_mm_s = m.feed_mm_s > 0 ? segment_limits(piece.segment, machine, m.feed_mm_s, kind).max_velocity
-                                                : 0.0;
+        next.facts.limit_mm_s =
+            m.feed_mm_s > 0 ? segment_limits(piece.segment, machine, m.feed_mm_s, kind).max_velocity : 0.0;
         next.facts.peak_mm_s = pts.peak_mm_s;
         next.facts.start_mm_s = pts.start_mm_s;
         next.facts.end_mm_s = pts.end_mm_s;
@@ -198,8 +198,14 @@ ToolPathRecorder::ToolPathRecorder(const MachineConfig& machine, ProfileKind kin
 ToolPathRecorder::~ToolPathRecorder() = default;
 ToolPathRecorder::ToolPathRecorder(ToolPathRecorder&&) noexcept = default;
 ToolPathRecorder& ToolPathRecorder::operator=(ToolPathRecorder&&) noexcept = default;
-void ToolPathRecorder::add_move(const Move& move) { impl_->add_move(move); }
-void ToolPathRecorder::add_piece(const TrajectoryPiece& piece) { impl_->add_piece(piece); }
-ToolPathReport ToolPathRecorder::finish() { return impl_->finish(); }
+void ToolPathRecorder::add_move(const Move& move) {
+    impl_->add_move(move);
+}
+void ToolPathRecorder::add_piece(const TrajectoryPiece& piece) {
+    impl_->add_piece(piece);
+}
+ToolPathReport ToolPathRecorder::finish() {
+    return impl_->finish();
+}
 
 }  // namespace nckit

@@ -10,7 +10,7 @@
 
 #include "nckit/cam/cam_table_csv.hpp"
 #include "nckit/cam/cam_table_file.hpp"
-#include "nckit/cam/piston_job.hpp"
+#include "nckit/process/piston/piston_job.hpp"
 
 namespace nckit::cam {
 namespace {
@@ -59,7 +59,8 @@ TEST(CamTableFile, ReadsBackWhatPistonWrites) {
 
 TEST(CamTableFile, ReadsTheEccentricTableAsAFunctionOfTheAngle) {
     std::string text = "theta_deg,x_diameter_mm\n";
-    for (int d = 0; d < 360; ++d) text += std::to_string(d) + "," + std::to_string(40.0 + 2.0 * std::cos(d * std::numbers::pi / 180)) + "\n";
+    for (int d = 0; d < 360; ++d)
+        text += std::to_string(d) + "," + std::to_string(40.0 + 2.0 * std::cos(d * std::numbers::pi / 180)) + "\n";
     const Result<CamTableFile> file = read_cam_table_csv(temp_file("eccentric.csv", text));
     ASSERT_TRUE(file.ok());
     EXPECT_EQ(file->kind(), CamFileKind::diameter_by_theta);
@@ -90,7 +91,8 @@ TEST(CamTableFile, RefusesBadFilesAtTheirPlace) {
         {header + "0,0,44.9\n0,2,44.9\n", ":3:3: error: angle 2 where degree 1 is due"},
         {header + "0,0,44.9\n1,1,44.9\n", ":3:1: error: z 1 mm changes within the station at 0 mm"},
         {header + station(5) + station(5), ":362:1: error: station z 5 mm does not follow 5 mm upwards"},
-        {header + station(0) + station(1, 0, 10), ":371:0: error: the last station (z 1 mm) ends after 10 of its 360 rows"},
+        {header + station(0) + station(1, 0, 10),
+         ":371:0: error: the last station (z 1 mm) ends after 10 of its 360 rows"},
     };
     int n = 0;
     for (const BadFile& bad : cases) {

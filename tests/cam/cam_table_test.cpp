@@ -10,7 +10,7 @@
 #include "nckit/cam/cam_table.hpp"
 #include "nckit/cam/encoder_cam.hpp"
 #include "nckit/cam/piston_cam.hpp"
-#include "nckit/cam/piston_job.hpp"
+#include "nckit/process/piston/piston_job.hpp"
 
 namespace nckit::cam {
 namespace {
@@ -18,8 +18,7 @@ namespace {
 constexpr double pi = std::numbers::pi;
 
 PistonJob example(const std::string& name) {
-    Result<PistonJob> job =
-        load_piston_job(std::string(NCKIT_SOURCE_DIR) + "/examples/piston/" + name);
+    Result<PistonJob> job = load_piston_job(std::string(NCKIT_SOURCE_DIR) + "/examples/piston/" + name);
     if (!job) {
         for (const Diagnostic& d : job.diagnostics()) ADD_FAILURE() << format_diagnostic(d);
         throw std::runtime_error("example does not load");
@@ -28,8 +27,7 @@ PistonJob example(const std::string& name) {
 }
 
 //! Largest |table − f| over `samples` seeded random points of the table's range.
-double random_error(const CamTable& table, const CamFunction& f, std::uint64_t seed,
-                    int samples = 100000) {
+double random_error(const CamTable& table, const CamFunction& f, std::uint64_t seed, int samples = 100000) {
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> theta(0, 360);
     std::uniform_real_distribution<double> z(table.z_from_mm(), table.z_to_mm());

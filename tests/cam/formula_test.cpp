@@ -89,8 +89,8 @@ TEST(CamDrawingFunction, SegmentsPickTheirInterval) {
     EXPECT_NEAR(e(10), 0.5, 1e-15);
     EXPECT_NEAR(e(30), 0.7, 1e-15);
     EXPECT_NEAR(e(40), 0.75, 1e-15);
-    EXPECT_NEAR(e(-10), 0.3, 1e-15);   // the first formula holds on before its interval
-    EXPECT_NEAR(e(60), 0.85, 1e-15);   // and the last after
+    EXPECT_NEAR(e(-10), 0.3, 1e-15);  // the first formula holds on before its interval
+    EXPECT_NEAR(e(60), 0.85, 1e-15);  // and the last after
 }
 
 TEST(CamDrawingFunction, ConstantAndTable) {

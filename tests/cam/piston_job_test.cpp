@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "nckit/cam/piston_job.hpp"
+#include "nckit/process/piston/piston_job.hpp"
 
 namespace nckit::cam {
 namespace {
@@ -42,7 +42,9 @@ std::string in_piston(std::string text, std::string_view lines) {
     return text.insert(text.find("[servo]"), std::string(lines));
 }
 
-Result<PistonJob> parse(const std::string& text) { return parse_piston_job(text, "job.toml"); }
+Result<PistonJob> parse(const std::string& text) {
+    return parse_piston_job(text, "job.toml");
+}
 
 //! 1-based line and column of `needle`'s byte `offset` in `text`.
 std::pair<std::uint32_t, std::uint32_t> where(const std::string& text, std::string_view needle,
@@ -57,22 +59,19 @@ std::pair<std::uint32_t, std::uint32_t> where(const std::string& text, std::stri
 }
 
 //! The job fails with a diagnostic at `needle` (+ `offset`) whose message holds `words`.
-void expect_error(const std::string& text, std::string_view needle, std::size_t offset,
-                  std::string_view words) {
+void expect_error(const std::string& text, std::string_view needle, std::size_t offset, std::string_view words) {
     const Result<PistonJob> job = parse(text);
     ASSERT_FALSE(job.ok()) << "no error for:\n" << text;
     const auto [line, column] = where(text, needle, offset);
     std::string all;
     for (const Diagnostic& d : job.diagnostics()) {
         all += format_diagnostic(d) + "\n";
-        if (d.location.line == line && d.location.column == column &&
-            d.message.find(words) != std::string::npos) {
+        if (d.location.line == line && d.location.column == column && d.message.find(words) != std::string::npos) {
             EXPECT_EQ(d.location.file_name(), "job.toml");
             return;
         }
     }
-    ADD_FAILURE() << "expected job.toml:" << line << ":" << column << " '" << words << "', got:\n"
-                  << all;
+    ADD_FAILURE() << "expected job.toml:" << line << ":" << column << " '" << words << "', got:\n" << all;
 }
 
 TEST(CamPistonJob, ReadsTheDocumentedSchema) {
@@ -104,8 +103,7 @@ TEST(CamPistonJob, ReadsTheDocumentedSchema) {
 }
 
 TEST(CamPistonJob, ReadsTheOptionalKeys) {
-    std::string text = in_piston(base_job,
-                                 "feed_mm_rev = 0.2\nencoder_counts = 4096\nspindle_ripple = 0.01\n");
+    std::string text = in_piston(base_job, "feed_mm_rev = 0.2\nencoder_counts = 4096\nspindle_ripple = 0.01\n");
     text += "max_acceleration_g = 20\n";
     const Result<PistonJob> job = parse(with(text, "dac_bits", ""));
     ASSERT_TRUE(job.ok()) << format_diagnostic(job.diagnostics().front());
@@ -117,8 +115,8 @@ TEST(CamPistonJob, ReadsTheOptionalKeys) {
 }
 
 TEST(CamPistonJob, ReadsEveryShape) {
-    const std::string four = in_piston(with(base_job, "shape", R"~(shape = "ellipse4")~"),
-                                       "e4_mm = [0.0, 0.01, 0.02, 0.02, 0.01, 0.0]\n");
+    const std::string four =
+        in_piston(with(base_job, "shape", R"~(shape = "ellipse4")~"), "e4_mm = [0.0, 0.01, 0.02, 0.02, 0.01, 0.0]\n");
     const Result<PistonJob> a = parse(four);
     ASSERT_TRUE(a.ok()) << format_diagnostic(a.diagnostics().front());
     EXPECT_EQ(a->profile.shape().kind(), ShapeKind::ellipse4);
@@ -136,8 +134,7 @@ TEST(CamPistonJob, ReadsEveryShape) {
 
 TEST(CamPistonJob, TheExamplesLoad) {
     for (const char* name : {"piston.toml", "piston_formula.toml"}) {
-        const Result<PistonJob> job =
-            load_piston_job(std::string(NCKIT_SOURCE_DIR) + "/examples/piston/" + name);
+        const Result<PistonJob> job = load_piston_job(std::string(NCKIT_SOURCE_DIR) + "/examples/piston/" + name);
         ASSERT_TRUE(job.ok()) << format_diagnostic(job.diagnostics().front());
     }
 }
@@ -145,8 +142,8 @@ TEST(CamPistonJob, TheExamplesLoad) {
 TEST(CamPistonJob, FormulaAndTableAgree) {
     // A linear drawing: the natural spline through its stations is the line itself, even
     // beyond the ends, so table and formula jobs give the same piston everywhere.
-    std::string table = with(base_job, "major_diameter_mm",
-                             "major_diameter_mm = [89.8, 89.84, 89.88, 89.92, 89.96, 90.0]");
+    std::string table =
+        with(base_job, "major_diameter_mm", "major_diameter_mm = [89.8, 89.84, 89.88, 89.92, 89.96, 90.0]");
     std::string formula = with(base_job, "major_diameter_mm", R"~(major_diameter_mm = "89.8 + 0.004*Z")~");
     formula = with(formula, "ovality_mm", R"~(ovality_mm = "0.4 + 0.008*Z")~");
     table = with(table, "ovality_mm", "ovality_mm = [0.40, 0.48, 0.56, 0.64, 0.72, 0.80]");
@@ -172,16 +169,14 @@ TEST(CamPistonJob, AFineTableFollowsItsFormula) {
         e += std::string("0.5") + (i < 50 ? ", " : "]");
     }
     std::string table = with(with(with(base_job, "z_mm", z), "major_diameter_mm", d), "ovality_mm", e);
-    std::string formula = with(base_job, "major_diameter_mm",
-                               R"~(major_diameter_mm = "89.98 - 0.0002*(Z - 30)^2")~");
+    std::string formula = with(base_job, "major_diameter_mm", R"~(major_diameter_mm = "89.98 - 0.0002*(Z - 30)^2")~");
     formula = with(formula, "ovality_mm", "ovality_mm = 0.5");
     const Result<PistonJob> a = parse(table);
     const Result<PistonJob> b = parse(formula);
     ASSERT_TRUE(a.ok()) << format_diagnostic(a.diagnostics().front());
     ASSERT_TRUE(b.ok()) << format_diagnostic(b.diagnostics().front());
     for (double zz = 0; zz <= 50; zz += 0.05) {
-        const double difference = std::abs(a->profile.major_diameter_mm(zz) -
-                                           b->profile.major_diameter_mm(zz));
+        const double difference = std::abs(a->profile.major_diameter_mm(zz) - b->profile.major_diameter_mm(zz));
         EXPECT_LE(difference, 2e-5) << zz;
         if (zz >= 10 && zz <= 40) {
             EXPECT_LE(difference, 1e-9) << zz;
@@ -209,8 +204,7 @@ ovality_mm = "0.65 + 0.006*(Z - 25)"
 // --- Every validation error, at its file position ---------------------------------------
 
 TEST(CamPistonJobError, FormulaSyntaxAtTheColumnOfTheFault) {
-    const std::string text =
-        with(base_job, "major_diameter_mm", R"~(major_diameter_mm = "89.9 + * Z")~");
+    const std::string text = with(base_job, "major_diameter_mm", R"~(major_diameter_mm = "89.9 + * Z")~");
     expect_error(text, "\"89.9 + * Z\"", 8, "formula syntax in 'major_diameter_mm'");
     const std::string shape = with(base_job, "shape", R"~(shape_formula = "E/4*(1 - cosd(2*PHIX))")~");
     expect_error(shape, "PHIX", 0, "unexpected token \"PHIX\"");
@@ -234,46 +228,38 @@ TEST(CamPistonJobError, StationsMustIncreaseStrictly) {
 }
 
 TEST(CamPistonJobError, ImpossibleDiametersAndOvality) {
-    expect_error(with(base_job, "major_diameter_mm",
-                      "major_diameter_mm = [89.80, 89.90, -89.96, 89.98, 89.96, 89.92]"),
+    expect_error(with(base_job, "major_diameter_mm", "major_diameter_mm = [89.80, 89.90, -89.96, 89.98, 89.96, 89.92]"),
                  "-89.96", 0, "a diameter must be positive");
-    expect_error(with(base_job, "major_diameter_mm",
-                      "major_diameter_mm = [89.80, 89.90, 89.96, 89.98, 8996, 89.92]"),
+    expect_error(with(base_job, "major_diameter_mm", "major_diameter_mm = [89.80, 89.90, 89.96, 89.98, 8996, 89.92]"),
                  "8996", 0, "not a piston");
-    expect_error(with(base_job, "ovality_mm", "ovality_mm = [0.40, 0.50, -0.1, 0.70, 0.75, 0.80]"),
-                 "-0.1", 0, "must be zero or more");
-    expect_error(with(base_job, "ovality_mm", "ovality_mm = [0.40, 0.50, 0.60, 90.0, 0.75, 0.80]"),
-                 "90.0", 0, "less than the major diameter");
+    expect_error(with(base_job, "ovality_mm", "ovality_mm = [0.40, 0.50, -0.1, 0.70, 0.75, 0.80]"), "-0.1", 0,
+                 "must be zero or more");
+    expect_error(with(base_job, "ovality_mm", "ovality_mm = [0.40, 0.50, 0.60, 90.0, 0.75, 0.80]"), "90.0", 0,
+                 "less than the major diameter");
     // A spline that dips below zero between stations is found on the fine grid.
-    expect_error(with(base_job, "ovality_mm", "ovality_mm = [0.0, 0.0, 0.0, 0.9, 0.0, 0.0]"),
-                 "[0.0, 0.0, 0.0, 0.9", 0, "must be zero or more");
+    expect_error(with(base_job, "ovality_mm", "ovality_mm = [0.0, 0.0, 0.0, 0.9, 0.0, 0.0]"), "[0.0, 0.0, 0.0, 0.9", 0,
+                 "must be zero or more");
     // A formula that goes wrong somewhere along Z.
-    expect_error(with(base_job, "ovality_mm", R"~(ovality_mm = "0.8 - 0.02*Z")~"),
-                 "\"0.8 - 0.02*Z\"", 0, "'ovality_mm' is -0.0");
-    expect_error(with(base_job, "major_diameter_mm", R"~(major_diameter_mm = "90/(Z-25)")~"),
-                 "\"90/(Z-25)\"", 0, "a diameter must be positive");
+    expect_error(with(base_job, "ovality_mm", R"~(ovality_mm = "0.8 - 0.02*Z")~"), "\"0.8 - 0.02*Z\"", 0,
+                 "'ovality_mm' is -0.0");
+    expect_error(with(base_job, "major_diameter_mm", R"~(major_diameter_mm = "90/(Z-25)")~"), "\"90/(Z-25)\"", 0,
+                 "a diameter must be positive");
 }
 
 TEST(CamPistonJobError, SpindleAndServoRanges) {
     expect_error(with(base_job, "rpm", "rpm = 0"), "rpm = 0", 6, "'rpm' must be positive");
     expect_error(with(base_job, "rpm", "rpm = 250000"), "250000", 0, "at most 100000");
-    expect_error(with(base_job, "stroke_mm", "stroke_mm = 0"), "stroke_mm = 0", 12,
-                 "'stroke_mm' must be positive");
-    expect_error(with(base_job, "damping", "damping = -0.1"), "-0.1", 0,
-                 "'damping' must be zero or more");
+    expect_error(with(base_job, "stroke_mm", "stroke_mm = 0"), "stroke_mm = 0", 12, "'stroke_mm' must be positive");
+    expect_error(with(base_job, "damping", "damping = -0.1"), "-0.1", 0, "'damping' must be zero or more");
     expect_error(with(base_job, "dac_bits", "dac_bits = 0"), "dac_bits = 0", 11, "from 1 to 32");
     expect_error(with(base_job, "dac_bits", "dac_bits = 33"), "33", 0, "from 1 to 32");
     expect_error(with(base_job, "dac_bits", "dac_bits = 16.5"), "16.5", 0, "must be an integer");
     expect_error(with(base_job, "model_error", "model_error = 0.95"), "0.95", 0, "at most 0.9");
-    expect_error(with(base_job, "model_error", "model_error = -0.1"), "-0.1", 0,
-                 "'model_error' must be zero or more");
-    expect_error(with(base_job, "natural_frequency_hz", "natural_frequency_hz = -135"), "-135", 0,
-                 "must be positive");
-    expect_error(in_piston(base_job, "encoder_counts = 0\n"), "encoder_counts = 0", 17,
-                 "from 1 to 10000000");
+    expect_error(with(base_job, "model_error", "model_error = -0.1"), "-0.1", 0, "'model_error' must be zero or more");
+    expect_error(with(base_job, "natural_frequency_hz", "natural_frequency_hz = -135"), "-135", 0, "must be positive");
+    expect_error(in_piston(base_job, "encoder_counts = 0\n"), "encoder_counts = 0", 17, "from 1 to 10000000");
     expect_error(in_piston(base_job, "feed_mm_rev = -0.1\n"), "-0.1", 0, "must be positive");
-    expect_error(in_piston(base_job, "spindle_ripple = 0.7\n"), "spindle_ripple = 0.7", 17,
-                 "at most 0.5");
+    expect_error(in_piston(base_job, "spindle_ripple = 0.7\n"), "spindle_ripple = 0.7", 17, "at most 0.5");
 }
 
 TEST(CamPistonJobError, ProfileNeedsMoreStrokeThanTheServoHas) {
@@ -287,16 +273,15 @@ TEST(CamPistonJobError, ProfileNeedsMoreAccelerationThanTheServoHasAtTheRpm) {
     const std::string text = with(base_job, "rpm", "rpm = 4000");
     expect_error(text, "rpm = 4000", 6, "more than the servo's 'max_acceleration_g' = 13; at most 3812 rpm");
     // E = 2 mm needs ≈ 14 g at 2500 rpm (docs/processes/piston.md): more than 13 g.
-    std::string big = with(with(base_job, "ovality_mm", "ovality_mm = 2.0"), "stroke_mm",
-                           "stroke_mm = 1.5");
+    std::string big = with(with(base_job, "ovality_mm", "ovality_mm = 2.0"), "stroke_mm", "stroke_mm = 1.5");
     expect_error(big, "rpm = 2500", 6, "(13.98 g)");
     EXPECT_TRUE(parse(with(big, "rpm", "rpm = 2000")).ok());  // ≈ 9 g
 }
 
 TEST(CamPistonJobError, SegmentGapOverlapCoverageAndSteps) {
     const std::string no_e = with(base_job, "ovality_mm", "");
-    auto segments = [&](std::string_view first_to, std::string_view second_from,
-                        std::string_view second_to, std::string_view second_formula) {
+    auto segments = [&](std::string_view first_to, std::string_view second_from, std::string_view second_to,
+                        std::string_view second_formula) {
         return in_piston(no_e, fmt::format(R"~([[piston.segment]]
 z_from_mm = 0
 z_to_mm = {}
@@ -334,16 +319,13 @@ TEST(CamPistonJobError, ShapeChoices) {
     expect_error(with(base_job, "shape", ""), "[piston]", 0, "missing key 'shape'");
     expect_error(with(base_job, "shape", R"~(shape = "oval")~"), "\"oval\"", 0,
                  "shape 'oval' is not one of ellipse2 ellipse4 ellipse");
-    expect_error(in_piston(base_job, "shape_formula = \"0\"\n"), "shape_formula", 16,
-                 "not both");
+    expect_error(in_piston(base_job, "shape_formula = \"0\"\n"), "shape_formula", 16, "not both");
     EXPECT_EQ(parse(in_piston(base_job, "shape_formula = \"0\"\n")).diagnostics().size(), 1u);
-    expect_error(with(base_job, "shape", R"~(shape = "ellipse4")~"), "\"ellipse4\"", 0,
-                 "needs 'e4_mm'");
-    expect_error(in_piston(base_job, "e4_mm = 0.01\n"), "0.01\n", 0,
-                 "used only by shape 'ellipse4'");
+    expect_error(with(base_job, "shape", R"~(shape = "ellipse4")~"), "\"ellipse4\"", 0, "needs 'e4_mm'");
+    expect_error(in_piston(base_job, "e4_mm = 0.01\n"), "0.01\n", 0, "used only by shape 'ellipse4'");
     // A shape formula whose radius is not finite somewhere (1/0 at PHI 90).
-    expect_error(with(base_job, "shape", R"~(shape_formula = "E/(PHI-90)")~"),
-                 "\"E/(PHI-90)\"", 0, "the section's radius is -inf mm at Z 0 mm, PHI 90°");
+    expect_error(with(base_job, "shape", R"~(shape_formula = "E/(PHI-90)")~"), "\"E/(PHI-90)\"", 0,
+                 "the section's radius is -inf mm at Z 0 mm, PHI 90°");
 }
 
 TEST(CamPistonJobError, FileAndTablesAndKeys) {

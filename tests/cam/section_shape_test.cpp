@@ -12,8 +12,7 @@ namespace nckit::cam {
 namespace {
 
 PistonProfile constant_profile(double d, double e, SectionShape shape) {
-    return PistonProfile(DrawingFunction::constant(d), DrawingFunction::constant(e),
-                         std::move(shape));
+    return PistonProfile(DrawingFunction::constant(d), DrawingFunction::constant(e), std::move(shape));
 }
 
 Formula shape_formula(const std::string& text) {
@@ -55,8 +54,7 @@ TEST(CamSectionShape, TrueEllipseDiffersFromTheCosineRuleByAboutHalfAMicrometre)
 }
 
 TEST(CamSectionShape, FourthHarmonicKeepsTheAxes) {
-    const PistonProfile p =
-        constant_profile(89.9, 0.5, SectionShape::ellipse4(DrawingFunction::constant(0.02)));
+    const PistonProfile p = constant_profile(89.9, 0.5, SectionShape::ellipse4(DrawingFunction::constant(0.02)));
     EXPECT_NEAR(p.radius_mm(0, 0), 44.95, 1e-12);
     EXPECT_NEAR(p.radius_mm(90, 0), 44.7, 1e-12);
     // At 45° the 4φ term is at its full (E4/4)(1 − cos 180°) = E4/2.
@@ -73,8 +71,7 @@ TEST(CamSectionShape, FormulaShapeMatchesTheBuiltIns) {
     const PistonProfile ellipse(d, e, SectionShape::ellipse());
     const PistonProfile ellipse_formula(
         d, e,
-        SectionShape::formula(shape_formula(
-            "D/2 - D/2*(D-E)/2 / sqrt(((D-E)/2*cosd(PHI))^2 + (D/2*sind(PHI))^2)")));
+        SectionShape::formula(shape_formula("D/2 - D/2*(D-E)/2 / sqrt(((D-E)/2*cosd(PHI))^2 + (D/2*sind(PHI))^2)")));
     std::mt19937_64 rng(11);
     std::uniform_real_distribution<double> angle(-720, 720), z(-10, 60);
     for (int i = 0; i < 5000; ++i) {

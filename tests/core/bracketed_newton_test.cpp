@@ -25,7 +25,9 @@ TEST(BracketedNewton, FindsTheCubeRootQuadratically) {
 }
 
 TEST(BracketedNewton, TheBracketKeepsTheRootAndShrinks) {
-    const auto f = [](double x) { return ValueSlope{std::tanh(5.0 * (x - 0.3)), 5.0 / std::pow(std::cosh(5.0 * (x - 0.3)), 2)}; };
+    const auto f = [](double x) {
+        return ValueSlope{std::tanh(5.0 * (x - 0.3)), 5.0 / std::pow(std::cosh(5.0 * (x - 0.3)), 2)};
+    };
     // From the far end Newton on tanh overshoots out of the bracket: bisection takes over.
     const NewtonRoot root = bracketed_newton(f, -10.0, 10.0, 10.0, NewtonStop{.step_tolerance = 1e-14});
     EXPECT_TRUE(root.converged);

@@ -34,7 +34,9 @@ TEST(FormatFixed, MatchesFmtOnRandomValuesNearTiesAndAcrossMagnitudes) {
     for (int i = 0; i < 200000; ++i) {
         double v = 0;
         switch (i % 3) {
-            case 0: v = unit(random) * std::pow(10.0, exponent(random)); break;
+            case 0:
+                v = unit(random) * std::pow(10.0, exponent(random));
+                break;
             case 1: {
                 // A tie in decimal (k + 0.5) / 1e4, nudged by a few ulps either way.
                 double tie = (static_cast<double>(units(random) % 100000000) + 0.5) / 1e4;
@@ -42,7 +44,9 @@ TEST(FormatFixed, MatchesFmtOnRandomValuesNearTiesAndAcrossMagnitudes) {
                 for (int k = ulps(random); k != 0; k += k > 0 ? -1 : 1) v = std::nextafter(v, k > 0 ? 1e300 : -1e300);
                 break;
             }
-            default: v = static_cast<double>(units(random) % 1000) * 1e-8; break;  // around zero, both signs
+            default:
+                v = static_cast<double>(units(random) % 1000) * 1e-8;
+                break;  // around zero, both signs
         }
         ASSERT_EQ(fast(v), fmt::format("{:.4f}", v)) << fmt::format("{:.17g}", v);
     }

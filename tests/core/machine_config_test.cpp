@@ -64,8 +64,7 @@ std::string only_error(std::string_view text) {
     const Diagnostic& d = errors.front();
     EXPECT_EQ(d.location.file_name(), "m.toml");
     EXPECT_EQ(d.severity, Severity::error);
-    return std::to_string(d.location.line) + ":" + std::to_string(d.location.column) + ": " +
-           d.message;
+    return std::to_string(d.location.line) + ":" + std::to_string(d.location.column) + ": " + d.message;
 }
 
 TEST(MachineConfig, ParsesTheDocumentedSchema) {
@@ -201,8 +200,7 @@ TEST(MachineConfigError, MissingMachineTable) {
 }
 
 TEST(MachineConfigError, WrongTypePointsAtTheValue) {
-    EXPECT_EQ(only_error(with("max_velocity", "\"fast\"")),
-              "8:16: 'max_velocity' must be a number, not a string");
+    EXPECT_EQ(only_error(with("max_velocity", "\"fast\"")), "8:16: 'max_velocity' must be a number, not a string");
     EXPECT_EQ(only_error(with("name", "42")), "2:8: 'name' must be a string, not an integer");
     EXPECT_EQ(only_error(with("encoder_counts", "4096.0")),
               "18:18: 'encoder_counts' must be an integer, not a floating-point number");
@@ -224,20 +222,17 @@ TEST_P(NonPositive, IsAnErrorAtTheValue) {
 
 INSTANTIATE_TEST_SUITE_P(
     MachineConfigError, NonPositive,
-    ::testing::Values(
-        NonPositiveCase{"servo_period_s", "0", "3:18: 'servo_period_s' must be positive, not 0"},
-        NonPositiveCase{"max_velocity", "-100", "8:16: 'max_velocity' must be positive, not -100"},
-        NonPositiveCase{"max_acceleration", "0.0",
-                        "9:20: 'max_acceleration' must be positive, not 0"},
-        NonPositiveCase{"max_jerk", "-1.5", "10:12: 'max_jerk' must be positive, not -1.5"},
-        NonPositiveCase{"steps_per_unit", "0", "13:18: 'steps_per_unit' must be positive, not 0"},
-        NonPositiveCase{"max_rpm", "0", "17:11: 'max_rpm' must be positive, not 0"},
-        NonPositiveCase{"encoder_counts", "-4096",
-                        "18:18: 'encoder_counts' must be positive, not -4096"}));
+    ::testing::Values(NonPositiveCase{"servo_period_s", "0", "3:18: 'servo_period_s' must be positive, not 0"},
+                      NonPositiveCase{"max_velocity", "-100", "8:16: 'max_velocity' must be positive, not -100"},
+                      NonPositiveCase{"max_acceleration", "0.0", "9:20: 'max_acceleration' must be positive, not 0"},
+                      NonPositiveCase{"max_jerk", "-1.5", "10:12: 'max_jerk' must be positive, not -1.5"},
+                      NonPositiveCase{"steps_per_unit", "0", "13:18: 'steps_per_unit' must be positive, not 0"},
+                      NonPositiveCase{"max_rpm", "0", "17:11: 'max_rpm' must be positive, not 0"},
+                      NonPositiveCase{"encoder_counts", "-4096",
+                                      "18:18: 'encoder_counts' must be positive, not -4096"}));
 
 TEST(MachineConfigError, NegativeBacklash) {
-    EXPECT_EQ(only_error(with("backlash", "-0.01")),
-              "14:12: 'backlash' must be zero or more, not -0.01");
+    EXPECT_EQ(only_error(with("backlash", "-0.01")), "14:12: 'backlash' must be zero or more, not -0.01");
     EXPECT_EQ(only_error(with("backlash", "0.0\nbacklash_rate_steps_s = 0")),
               "15:25: 'backlash_rate_steps_s' must be positive, not 0");
 }
@@ -247,8 +242,7 @@ TEST(MachineConfigError, NonFiniteNumber) {
 }
 
 TEST(MachineConfigError, MinNotBelowMax) {
-    EXPECT_EQ(only_error(with("max", "-500.0")),
-              "12:7: 'max' (-500) must be greater than 'min' (-500)");
+    EXPECT_EQ(only_error(with("max", "-500.0")), "12:7: 'max' (-500) must be greater than 'min' (-500)");
 }
 
 TEST(MachineConfigError, HomeOutsideTheTravel) {
@@ -272,8 +266,7 @@ TEST(MachineConfigError, DuplicateAxis) {
 }
 
 TEST(MachineConfigError, UnknownKind) {
-    EXPECT_EQ(only_error(with("kind", "\"prismatic\"")),
-              "7:8: kind 'prismatic' is not one of linear rotary");
+    EXPECT_EQ(only_error(with("kind", "\"prismatic\"")), "7:8: kind 'prismatic' is not one of linear rotary");
 }
 
 TEST(MachineConfigError, UnknownChoices) {
@@ -294,8 +287,7 @@ TEST(MachineConfig, PhaseTableDefaultsToNone) {
 
 TEST(MachineConfig, ReadsEveryPhaseTableName) {
     const std::array expected{PhaseTableKind::none, PhaseTableKind::three_phase_six_beat,
-                              PhaseTableKind::three_phase_three_beat,
-                              PhaseTableKind::two_phase_full_step,
+                              PhaseTableKind::three_phase_three_beat, PhaseTableKind::two_phase_full_step,
                               PhaseTableKind::two_phase_half_step};
     static_assert(expected.size() == phase_table_names.size());
     for (std::size_t i = 0; i < expected.size(); ++i) {
@@ -319,8 +311,7 @@ TEST(MachineConfigError, AtLeastOneAxis) {
     const std::size_t axis_start = config.find("[[axis]]");
     config.erase(axis_start, config.find("[spindle]") - axis_start);
     EXPECT_EQ(only_error(config), "1:1: at least one [[axis]] is required");
-    EXPECT_EQ(only_error("axis = []\n[machine]\nname = \"m\"\n"),
-              "1:8: at least one [[axis]] is required");
+    EXPECT_EQ(only_error("axis = []\n[machine]\nname = \"m\"\n"), "1:8: at least one [[axis]] is required");
 }
 
 TEST(MachineConfigError, AxisMustBeAnArrayOfTables) {
@@ -340,12 +331,9 @@ TEST(MachineConfigError, UnknownKeysEverywhere) {
               "4:1: unknown key 'servo_perod' in [machine]");
     EXPECT_EQ(only_error(with("backlash", "0.0\nmax_acceleraton = 10")),
               "15:1: unknown key 'max_acceleraton' in [[axis]]");
-    EXPECT_EQ(only_error(with("encoder_counts", "4096\nfoo = 1")),
-              "19:1: unknown key 'foo' in [spindle]");
-    EXPECT_EQ(only_error(std::string(valid_config) + "[coolant]\n"),
-              "19:2: unknown table [coolant]");
-    EXPECT_EQ(only_error("answer = 42\n" + std::string(valid_config)),
-              "1:1: unknown key 'answer' at top level");
+    EXPECT_EQ(only_error(with("encoder_counts", "4096\nfoo = 1")), "19:1: unknown key 'foo' in [spindle]");
+    EXPECT_EQ(only_error(std::string(valid_config) + "[coolant]\n"), "19:2: unknown table [coolant]");
+    EXPECT_EQ(only_error("answer = 42\n" + std::string(valid_config)), "1:1: unknown key 'answer' at top level");
 }
 
 TEST(MachineConfigError, ExactStopMcodesAreNonNegativeIntegers) {
@@ -379,10 +367,8 @@ TEST(MachineConfigError, CollectsEveryErrorInFileOrder) {
     ASSERT_EQ(errors.size(), 4U);
     EXPECT_EQ(format_diagnostic(errors[0]), "m.toml:1:1: error: missing key 'name' in [machine]");
     EXPECT_EQ(format_diagnostic(errors[1]), "m.toml:2:1: error: unknown key 'nmae' in [machine]");
-    EXPECT_EQ(format_diagnostic(errors[2]),
-              "m.toml:10:12: error: 'max_jerk' must be positive, not 0");
-    EXPECT_EQ(format_diagnostic(errors[3]),
-              "m.toml:17:11: error: 'max_rpm' must be a number, not a string");
+    EXPECT_EQ(format_diagnostic(errors[2]), "m.toml:10:12: error: 'max_jerk' must be positive, not 0");
+    EXPECT_EQ(format_diagnostic(errors[3]), "m.toml:17:11: error: 'max_rpm' must be a number, not a string");
     EXPECT_EQ(errors[1].code, "config-unknown-key");
 }
 

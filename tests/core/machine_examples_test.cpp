@@ -8,8 +8,7 @@
 namespace nckit {
 namespace {
 
-const std::filesystem::path machines_dir =
-    std::filesystem::path(NCKIT_SOURCE_DIR) / "examples" / "machines";
+const std::filesystem::path machines_dir = std::filesystem::path(NCKIT_SOURCE_DIR) / "examples" / "machines";
 
 MachineConfig load(const char* file_name) {
     Result<MachineConfig> result = load_machine_config(machines_dir / file_name);

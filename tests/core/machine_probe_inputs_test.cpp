@@ -42,10 +42,10 @@ std::string errors_of(std::string_view tables) {
 }
 
 TEST(MachineProbeInputs, ReadsSurfacesAndInputs) {
-    Result<MachineConfig> result = parse_machine_config(
-        config("[probe]\nsurfaces = [{ axis = \"Z\", at = -20.5 }, { axis = \"z\", at = 3 }]\n\n"
-               "[inputs]\n1000 = 1\n1199 = -2.5\n"),
-        "m.toml");
+    Result<MachineConfig> result =
+        parse_machine_config(config("[probe]\nsurfaces = [{ axis = \"Z\", at = -20.5 }, { axis = \"z\", at = 3 }]\n\n"
+                                    "[inputs]\n1000 = 1\n1199 = -2.5\n"),
+                             "m.toml");
     ASSERT_TRUE(result.ok()) << format_diagnostic(result.diagnostics().front());
     const MachineConfig& m = result.value();
     ASSERT_EQ(m.probe_surfaces.size(), 2U);

@@ -36,7 +36,8 @@ x_offset_mm = -1.5
 length_mm = 30
 nose_radius_mm = 0.4
 orientation = 3
-)", "tools.toml");
+)",
+                                              "tools.toml");
     ASSERT_TRUE(table.ok()) << first_error(table.diagnostics());
     ASSERT_EQ(table->size(), 3u);
     EXPECT_DOUBLE_EQ(*table->length_mm(1), 120.48);
@@ -48,8 +49,8 @@ orientation = 3
     EXPECT_DOUBLE_EQ(table->find(21)->nose_radius_mm(), 0.4);
     EXPECT_EQ(table->find(21)->orientation, 3);
     EXPECT_DOUBLE_EQ(table->find(21)->x_offset_mm, -1.5);
-    EXPECT_EQ(table->length_mm(0), 0.0);   // H0: no offset
-    EXPECT_FALSE(table->length_mm(7));     // no row 7
+    EXPECT_EQ(table->length_mm(0), 0.0);  // H0: no offset
+    EXPECT_FALSE(table->length_mm(7));    // no row 7
     EXPECT_FALSE(table->radius_mm(7));
 }
 
@@ -159,7 +160,8 @@ tool_change = 100.0
     Result<MachineConfig> bad_table = load_machine_config(dir / "m.toml");
     ASSERT_FALSE(bad_table.ok());
     EXPECT_NE(first_error(bad_table.diagnostics()).find("tool.tbl:1:11: error: Q is a tip orientation"),
-              std::string::npos) << first_error(bad_table.diagnostics());
+              std::string::npos)
+        << first_error(bad_table.diagnostics());
     std::filesystem::remove_all(dir);
 }
 

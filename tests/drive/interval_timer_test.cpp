@@ -14,12 +14,17 @@ constexpr double timer_clock_hz = 1'000'000.0;
 constexpr double beats_per_turn = 240.0;
 constexpr double gear = 3.0;
 
-double step_rate_hz(double shaft_rpm) { return shaft_rpm / 60.0 * gear * beats_per_turn; }
+double step_rate_hz(double shaft_rpm) {
+    return shaft_rpm / 60.0 * gear * beats_per_turn;
+}
 
 TEST(IntervalTimer, CrosshatchWorkedDivisors) {
     const IntervalTimer timer{timer_clock_hz};
     // Rotation 30/45/60 Hz step rates: exact divisors 33333.33, 22222.22, 16666.67.
-    struct Case { double rate_hz; std::uint32_t divisor; };
+    struct Case {
+        double rate_hz;
+        std::uint32_t divisor;
+    };
     for (const Case c : {Case{30.0, 33333}, Case{45.0, 22222}, Case{60.0, 16667}}) {
         const TimerSetting s = timer.setting_for(c.rate_hz);
         ASSERT_TRUE(s.ok()) << s.message();
@@ -76,8 +81,7 @@ TEST(IntervalTimer, ZeroMeans65536Convention) {
     EXPECT_EQ(s.divisor, 65536U);
     EXPECT_EQ(IntervalTimer::load_value(s.divisor), 0U);
     EXPECT_EQ(IntervalTimer::load_value(1389), 1389U);
-    EXPECT_EQ(IntervalTimer{timer_clock_hz}.setting_for(timer_clock_hz / 65536.0).status,
-              TimerStatus::too_slow);
+    EXPECT_EQ(IntervalTimer{timer_clock_hz}.setting_for(timer_clock_hz / 65536.0).status, TimerStatus::too_slow);
 }
 
 TEST(IntervalTimer, RoundsToTheNearestRateNotTheNearestDivisor) {
@@ -96,8 +100,7 @@ TEST(IntervalTimer, RandomRatesGiveTheNearestAchievableRate) {
     std::mt19937_64 random(20261123);
     for (double clock : {1'000'000.0, 1'193'182.0, 8'000'000.0}) {
         const IntervalTimer timer{clock};
-        std::uniform_real_distribution<double> log_rate(std::log(timer.min_rate_hz()),
-                                                        std::log(timer.max_rate_hz()));
+        std::uniform_real_distribution<double> log_rate(std::log(timer.min_rate_hz()), std::log(timer.max_rate_hz()));
         for (int i = 0; i < 20000; ++i) {
             const double wanted = std::exp(log_rate(random));
             const TimerSetting s = timer.setting_for(wanted);

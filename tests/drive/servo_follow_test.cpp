@@ -117,8 +117,8 @@ TEST(ServoFollowProperty, EqualsAPlainLoopOnRandomPrograms) {
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     for (int run = 0; run < 40; ++run) {
         const double period_s = run % 2 == 0 ? 1e-3 : 2.5e-4 * (1 + unit(rng));
-        const MachineConfig machine = servo_mill(5 + 60 * unit(rng), 0.2 + 1.5 * unit(rng), 0.9 + 0.2 * unit(rng),
-                                                 period_s);
+        const MachineConfig machine =
+            servo_mill(5 + 60 * unit(rng), 0.2 + 1.5 * unit(rng), 0.9 + 0.2 * unit(rng), period_s);
         std::vector<Move> moves;
         AxisVector at;
         for (int n = 0; n < 20; ++n) {

@@ -236,8 +236,8 @@ TEST(StepGenerator, ReversalBetweenLines) {
 TEST(StepGenerator, ReversalsInsideAFullCircle) {
     const MachineConfig machine = test_machine();
     // Radius 1 about (1, 0): X goes 0 → 2 → 0, Y 0 → -1 → 0 → 1 → 0 (clockwise).
-    const PlanResult plan = plan_moves(
-        {arc(xyz(0, 0, 0), xyz(0, 0, 0), xyz(1, 0, 0), ArcDirection::clockwise, 1200)}, machine);
+    const PlanResult plan =
+        plan_moves({arc(xyz(0, 0, 0), xyz(0, 0, 0), xyz(1, 0, 0), ArcDirection::clockwise, 1200)}, machine);
     ASSERT_TRUE(plan.diagnostics.empty());
     const std::vector<StepEvent> events = generate_steps(plan.trajectory, machine);
     std::vector<int> steps(3, 0);
@@ -262,7 +262,7 @@ TEST(StepGenerator, ReversalsInsideAFullCircle) {
 
 TEST(StepGenerator, BacklashStepsAtTheReversal) {
     MachineConfig machine = test_machine();
-    machine.axes[0].backlash = 0.01;  // 8 steps
+    machine.axes[0].backlash = 0.01;                // 8 steps
     machine.axes[0].backlash_rate_steps_s = 20000;  // one every 50 µs
     const PlanResult plan = plan_moves({line(xyz(0, 0, 0), xyz(1, 0, 0), 600), line(xyz(1, 0, 0), xyz(0.5, 0, 0), 600),
                                         line(xyz(0.5, 0, 0), xyz(2, 0, 0), 600)},

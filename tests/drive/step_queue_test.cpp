@@ -46,14 +46,14 @@ std::vector<StepEvent> random_steps(std::mt19937_64& random, std::size_t axes, i
         t += gap_ns(random);
         const auto a = static_cast<std::size_t>(axis(random));
         if (reverse(random)) direction[a] = -direction[a];
-        steps.push_back(StepEvent{.t_ns = t, .axis = static_cast<std::uint8_t>(a),
-                                  .direction = static_cast<std::int8_t>(direction[a])});
+        steps.push_back(StepEvent{
+            .t_ns = t, .axis = static_cast<std::uint8_t>(a), .direction = static_cast<std::int8_t>(direction[a])});
     }
     return steps;
 }
 
-void check_replay(const std::vector<StepEvent>& steps, const std::vector<StepQueueCommand>& commands,
-                  std::size_t axes, std::int64_t max_error_ns) {
+void check_replay(const std::vector<StepEvent>& steps, const std::vector<StepQueueCommand>& commands, std::size_t axes,
+                  std::int64_t max_error_ns) {
     const auto replayed = replay(commands, axes);
     std::vector<std::size_t> next(axes, 0);
     for (const StepEvent& e : steps) {
@@ -110,8 +110,8 @@ TEST(StepQueue, CommandsComeOutWhenDirectionChangesOrThePendingStepsAreFull) {
     EXPECT_EQ(commands.back().kind, StepQueueCommand::Kind::set_direction);
     EXPECT_EQ(commands.back().direction, 1);
     queue.finish(commands);
-    check_replay({{1000, 1, -1}, {2000, 1, -1}, {3000, 1, -1}, {4000, 1, -1}, {5000, 1, -1}, {6000, 1, 1}},
-                 commands, 2, 0);
+    check_replay({{1000, 1, -1}, {2000, 1, -1}, {3000, 1, -1}, {4000, 1, -1}, {5000, 1, -1}, {6000, 1, 1}}, commands, 2,
+                 0);
 }
 
 TEST(StepQueue, BadParametersAndUnknownAxesAreProgrammingErrors) {

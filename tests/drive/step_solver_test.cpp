@@ -36,9 +36,12 @@ struct PlaneAxes {
 };
 PlaneAxes plane_axes(Plane plane) {
     switch (plane) {
-        case Plane::xy: return {0, 1, 2};
-        case Plane::zx: return {2, 0, 1};
-        case Plane::yz: return {1, 2, 0};
+        case Plane::xy:
+            return {0, 1, 2};
+        case Plane::zx:
+            return {2, 0, 1};
+        case Plane::yz:
+            return {1, 2, 0};
     }
     return {0, 1, 2};
 }
@@ -96,8 +99,8 @@ TEST(ArcAxisCrossings, ClosedFormMatchesNewtonOnRandomArcs) {
                     // A boundary strictly inside the interval's range of x.
                     const double boundary = x_a + (x_b - x_a) * (0.001 + 0.998 * unit(rng));
                     const double fast = arc.crossing(boundary / spu, s_a, s_b);
-                    const double newton = drive_detail::arc_crossing_newton(g, i, spu, boundary, s_a, s_b, rising,
-                                                                            0.5 * (s_a + s_b));
+                    const double newton =
+                        drive_detail::arc_crossing_newton(g, i, spu, boundary, s_a, s_b, rising, 0.5 * (s_a + s_b));
                     if (fast < 0) {
                         ++fallbacks;
                         continue;
@@ -201,8 +204,7 @@ std::vector<Move> random_program(std::mt19937_64& rng, int count) {
 // Per axis, the fast solvers' steps against the reference: the same steps in the same order,
 // each within 1 ns, and at most 1 in 10,000 not to the ns (the exact times agree to ~1e-14 s; only
 // one within that of a half ns rounds the other way).
-void expect_same_steps(const std::vector<StepEvent>& fast, const std::vector<StepEvent>& reference,
-                       std::size_t axes) {
+void expect_same_steps(const std::vector<StepEvent>& fast, const std::vector<StepEvent>& reference, std::size_t axes) {
     ASSERT_EQ(fast.size(), reference.size());
     std::int64_t differing = 0;
     for (std::size_t axis = 0; axis < axes; ++axis) {

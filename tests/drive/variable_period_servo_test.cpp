@@ -24,8 +24,8 @@ double analytic_step(const ServoParameters& p, double t) {
     const double z = p.damping;
     if (z < 1.0) {
         const double wd = w * std::sqrt(1.0 - z * z);
-        return p.gain * (1.0 - std::exp(-z * w * t) *
-                                   (std::cos(wd * t) + z / std::sqrt(1.0 - z * z) * std::sin(wd * t)));
+        return p.gain *
+               (1.0 - std::exp(-z * w * t) * (std::cos(wd * t) + z / std::sqrt(1.0 - z * z) * std::sin(wd * t)));
     }
     const double r1 = -w * (z - std::sqrt(z * z - 1.0));
     const double r2 = -w * (z + std::sqrt(z * z - 1.0));
@@ -87,8 +87,8 @@ TEST(VariablePeriodServo, SplittingAHoldChangesNothing) {
     std::mt19937_64 random(3);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     for (int trial = 0; trial < 2000; ++trial) {
-        const ServoParameters p =
-            ServoParameters::from_natural_frequency(0.5 + unit(random), 50.0 + 300.0 * unit(random), 1.5 * unit(random));
+        const ServoParameters p = ServoParameters::from_natural_frequency(
+            0.5 + unit(random), 50.0 + 300.0 * unit(random), 1.5 * unit(random));
         const ServoState start{unit(random) - 0.5, 100.0 * (unit(random) - 0.5)};
         const double u = unit(random) - 0.5;
         const double h1 = 1e-4 * (0.1 + unit(random));
@@ -106,7 +106,8 @@ TEST(VariablePeriodServo, SplittingAHoldChangesNothing) {
 TEST(VariablePeriodServo, RepeatedPeriodsAreComputedOnce) {
     const ServoParameters p = ServoParameters::from_natural_frequency(1.0, axis_hz, 0.3);
     std::vector<double> periods;
-    for (int k = 0; k < 360; ++k) periods.push_back(period_s / (1.0 + 0.002 * std::sin(2 * std::numbers::pi * k / 360)));
+    for (int k = 0; k < 360; ++k)
+        periods.push_back(period_s / (1.0 + 0.002 * std::sin(2 * std::numbers::pi * k / 360)));
     VariablePeriodServo cached(p);
     for (int turn = 0; turn < 5; ++turn) {
         for (double h : periods) cached.step(0.1, h);

@@ -100,7 +100,9 @@ TEST(EccentricExample, WorkedNumbersOfTheReference) {
     const auto all = passes(r.moves);
     ASSERT_FALSE(all.empty());
     const std::vector<Line>& finish = all.back();
-    auto diameter_at = [&](double theta) { return 2.0 * finish[static_cast<std::size_t>(theta / step_deg) - 1].to[Axis::X]; };
+    auto diameter_at = [&](double theta) {
+        return 2.0 * finish[static_cast<std::size_t>(theta / step_deg) - 1].to[Axis::X];
+    };
     EXPECT_NEAR(diameter_at(360.0), 46.0, 1e-3);
     EXPECT_NEAR(diameter_at(90.0), 39.547, 1e-3);
     EXPECT_NEAR(diameter_at(180.0), 34.0, 1e-3);

@@ -22,27 +22,42 @@ Block parsed(std::string_view line) {
 
 const char* op_name(ExprOp op) {
     switch (op) {
-        case ExprOp::add: return "+";
-        case ExprOp::subtract: return "-";
-        case ExprOp::multiply: return "*";
-        case ExprOp::divide: return "/";
-        case ExprOp::mod: return "MOD";
-        case ExprOp::bit_and: return "AND";
-        case ExprOp::bit_or: return "OR";
-        case ExprOp::bit_xor: return "XOR";
-        case ExprOp::eq: return "EQ";
-        case ExprOp::ne: return "NE";
-        case ExprOp::gt: return "GT";
-        case ExprOp::ge: return "GE";
-        case ExprOp::lt: return "LT";
-        case ExprOp::le: return "LE";
-        default: return "?";
+        case ExprOp::add:
+            return "+";
+        case ExprOp::subtract:
+            return "-";
+        case ExprOp::multiply:
+            return "*";
+        case ExprOp::divide:
+            return "/";
+        case ExprOp::mod:
+            return "MOD";
+        case ExprOp::bit_and:
+            return "AND";
+        case ExprOp::bit_or:
+            return "OR";
+        case ExprOp::bit_xor:
+            return "XOR";
+        case ExprOp::eq:
+            return "EQ";
+        case ExprOp::ne:
+            return "NE";
+        case ExprOp::gt:
+            return "GT";
+        case ExprOp::ge:
+            return "GE";
+        case ExprOp::lt:
+            return "LT";
+        case ExprOp::le:
+            return "LE";
+        default:
+            return "?";
     }
 }
 
 const char* function_name(ExprFunction f) {
-    static constexpr const char* names[] = {"SIN", "COS",   "TAN", "ASIN", "ACOS", "ATAN", "SQRT", "ABS", "ROUND",
-                                            "FIX", "FUP",   "LN",  "EXP",  "POW",  "ADP",  "BIN",  "BCD"};
+    static constexpr const char* names[] = {"SIN", "COS", "TAN", "ASIN", "ACOS", "ATAN", "SQRT", "ABS", "ROUND",
+                                            "FIX", "FUP", "LN",  "EXP",  "POW",  "ADP",  "BIN",  "BCD"};
     return names[static_cast<int>(f)];
 }
 
@@ -51,13 +66,17 @@ std::string tree(const Block& block, std::int32_t index) {
     if (index < 0) return "<none>";
     const ExprNode& n = block.exprs.at(static_cast<std::size_t>(index));
     switch (n.op) {
-        case ExprOp::number: return fmt::format("{}", n.value);
-        case ExprOp::variable: return n.a >= 0 ? "#[" + tree(block, n.a) + "]" : fmt::format("#{}", n.value);
-        case ExprOp::negate: return "(neg " + tree(block, n.a) + ")";
+        case ExprOp::number:
+            return fmt::format("{}", n.value);
+        case ExprOp::variable:
+            return n.a >= 0 ? "#[" + tree(block, n.a) + "]" : fmt::format("#{}", n.value);
+        case ExprOp::negate:
+            return "(neg " + tree(block, n.a) + ")";
         case ExprOp::function:
             return fmt::format("({} {}{})", function_name(n.function), tree(block, n.a),
                                n.b >= 0 ? " " + tree(block, n.b) : "");
-        default: return fmt::format("({} {} {})", op_name(n.op), tree(block, n.a), tree(block, n.b));
+        default:
+            return fmt::format("({} {} {})", op_name(n.op), tree(block, n.a), tree(block, n.b));
     }
 }
 
@@ -66,15 +85,22 @@ std::string statement(std::string_view line) {
     Block b = parsed(line);
     const MacroStatement& s = b.statement;
     switch (s.kind) {
-        case StatementKind::none: return "none";
-        case StatementKind::assign: return tree(b, s.target) + " = " + tree(b, s.value);
-        case StatementKind::go_to: return "GOTO " + tree(b, s.value);
-        case StatementKind::if_goto: return "IF " + tree(b, s.condition) + " GOTO " + tree(b, s.value);
+        case StatementKind::none:
+            return "none";
+        case StatementKind::assign:
+            return tree(b, s.target) + " = " + tree(b, s.value);
+        case StatementKind::go_to:
+            return "GOTO " + tree(b, s.value);
+        case StatementKind::if_goto:
+            return "IF " + tree(b, s.condition) + " GOTO " + tree(b, s.value);
         case StatementKind::if_then:
             return "IF " + tree(b, s.condition) + " THEN " + tree(b, s.target) + " = " + tree(b, s.value);
-        case StatementKind::while_do: return fmt::format("WHILE {} DO{}", tree(b, s.condition), s.loop);
-        case StatementKind::do_loop: return fmt::format("DO{}", s.loop);
-        case StatementKind::end_loop: return fmt::format("END{}", s.loop);
+        case StatementKind::while_do:
+            return fmt::format("WHILE {} DO{}", tree(b, s.condition), s.loop);
+        case StatementKind::do_loop:
+            return fmt::format("DO{}", s.loop);
+        case StatementKind::end_loop:
+            return fmt::format("END{}", s.loop);
     }
     return "?";
 }

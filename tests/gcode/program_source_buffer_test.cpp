@@ -20,7 +20,8 @@ TEST(ProgramSourceBuffer, LineStraddlingTheBufferEndIsWhole) {
     // "G1 X..." starts 10 bytes before the buffer ends and runs 12 bytes into the next fill.
     const std::string text = filler(buffer_bytes - 10) + "G1 X123456789 Y1234567\nM30\n";
     const std::vector<Got> expected = expected_lines(text);
-    ASSERT_EQ(expected[expected.size() - 2], (Got{"G1 X123456789 Y1234567", expected.back().number - 1, buffer_bytes - 10}));
+    ASSERT_EQ(expected[expected.size() - 2],
+              (Got{"G1 X123456789 Y1234567", expected.back().number - 1, buffer_bytes - 10}));
     ProgramSource source = open_file(dir.write("p.ngc", text));
     EXPECT_EQ(all_lines(source), expected);
 }

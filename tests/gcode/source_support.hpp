@@ -30,8 +30,8 @@ struct Got {
 };
 
 inline std::ostream& operator<<(std::ostream& os, const Got& g) {
-    return os << "{\"" << (g.text.size() > 40 ? g.text.substr(0, 40) + "..." : g.text) << "\" ("
-              << g.text.size() << " bytes), line " << g.number << ", offset " << g.offset << "}";
+    return os << "{\"" << (g.text.size() > 40 ? g.text.substr(0, 40) + "..." : g.text) << "\" (" << g.text.size()
+              << " bytes), line " << g.number << ", offset " << g.offset << "}";
 }
 
 //! The next line, or nothing at the end of input; fails the test on an error.

@@ -48,8 +48,9 @@ int main(int argc, char** argv) {
         worst_spline = std::max(worst_spline, spline);
         ++samples;
     }
-    std::printf("{\"samples\":%ld,\"max_engine_error_mm\":%.9g,\"max_spline_error_mm\":%.9g,"
-                "\"at_counts\":%.0f,\"at_z_mm\":%.9g}\n",
-                samples, worst_engine, worst_spline, worst_count, worst_z);
+    std::printf(
+        "{\"samples\":%ld,\"max_engine_error_mm\":%.9g,\"max_spline_error_mm\":%.9g,"
+        "\"at_counts\":%.0f,\"at_z_mm\":%.9g}\n",
+        samples, worst_engine, worst_spline, worst_count, worst_z);
     return 0;
 }

@@ -22,9 +22,9 @@ TEST(Arc, ClockwiseWithCentreOffsets) {
 }
 
 TEST(Arc, CounterClockwiseText) {
-    EXPECT_EQ(texts("G0 X10\nG3 X0 Y10 I-10 F100\n"),
-              (Texts{"G0 X10.0000 Y0.0000 Z0.0000",
-                     "G3 X0.0000 Y10.0000 Z0.0000 CX0.0000 CY0.0000 CZ0.0000 F100.0000"}));
+    EXPECT_EQ(
+        texts("G0 X10\nG3 X0 Y10 I-10 F100\n"),
+        (Texts{"G0 X10.0000 Y0.0000 Z0.0000", "G3 X0.0000 Y10.0000 Z0.0000 CX0.0000 CY0.0000 CZ0.0000 F100.0000"}));
 }
 
 TEST(Arc, CentreOffsetsAreIncrementalEvenInG90) {
@@ -106,11 +106,16 @@ TEST(Arc, RelativeToleranceAllowsMoreOnBigArcs) {
     EXPECT_EQ(error_where("G0 X10\nG3 X0 Y10.03 I-10 F100\n"), "bad-arc 2:1");
     moves_of("G0 X10\nG3 X0 Y10.02 I-10 F100\n");
     // More than 100 times the tolerance is refused whatever the radius.
-    EXPECT_EQ(error_where("G0 X5000\nG3 X0 Y5003 I-5000 F100\n", [] {
-                  MachineConfig m = default_mill();
-                  for (AxisConfig& a : m.axes) { a.min = -6000; a.max = 6000; }
-                  return m;
-              }()), "bad-arc 2:1");
+    EXPECT_EQ(error_where("G0 X5000\nG3 X0 Y5003 I-5000 F100\n",
+                          [] {
+                              MachineConfig m = default_mill();
+                              for (AxisConfig& a : m.axes) {
+                                  a.min = -6000;
+                                  a.max = 6000;
+                              }
+                              return m;
+                          }()),
+              "bad-arc 2:1");
 }
 
 TEST(Arc, ToleranceIsAnOption) {

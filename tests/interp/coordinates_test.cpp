@@ -81,7 +81,9 @@ TEST(G92, MakesTheCurrentPositionTheGivenValue) {
               (Texts{"G0 X10.0000 Y10.0000 Z0.0000", "G0 X15.0000 Y15.0000 Z0.0000"}));
 }
 
-TEST(G92, MakesNoMove) { EXPECT_TRUE(moves_of("G92 X10 Y10 Z3\n").empty()); }
+TEST(G92, MakesNoMove) {
+    EXPECT_TRUE(moves_of("G92 X10 Y10 Z3\n").empty());
+}
 
 TEST(G92, IsAbsoluteEvenInG91) {
     EXPECT_EQ(texts("G0 X10\nG91 G92 X0\nG90 G0 X1\n"),
@@ -99,7 +101,8 @@ TEST(G92, G92Point1ClearsEveryAxis) {
 }
 
 TEST(G92, G92Point1WithAxisWordsMovesInTheModalMode) {
-    EXPECT_EQ(texts("G0 X10\nG92 X0\nG92.1 X1\n"), (Texts{"G0 X10.0000 Y0.0000 Z0.0000", "G0 X1.0000 Y0.0000 Z0.0000"}));
+    EXPECT_EQ(texts("G0 X10\nG92 X0\nG92.1 X1\n"),
+              (Texts{"G0 X10.0000 Y0.0000 Z0.0000", "G0 X1.0000 Y0.0000 Z0.0000"}));
 }
 
 TEST(G50, SetsCoordinatesLikeG92InDiameters) {
@@ -127,7 +130,9 @@ TEST(G52, ReplacesThePreviousShiftAxisByAxis) {
     EXPECT_EQ(texts("G52 X10 Y5\nG52 X3\nG0 X0 Y0\n"), (Texts{"G0 X3.0000 Y5.0000 Z0.0000"}));
 }
 
-TEST(G52, MakesNoMove) { EXPECT_TRUE(moves_of("G52 X10\n").empty()); }
+TEST(G52, MakesNoMove) {
+    EXPECT_TRUE(moves_of("G52 X10\n").empty());
+}
 
 TEST(Offsets, ArcCentreFollowsTheOffsets) {
     Arc arc = the<Arc>("G10 L2 P1 X100 Y100\nG52 X10\nG0 X10 Y0\nG2 X-10 I-10 F100\n");

@@ -12,7 +12,9 @@
 namespace nckit::test {
 namespace {
 
-double dist(const AxisVector& a, double x, double y) { return std::hypot(a[Axis::X] - x, a[Axis::Y] - y); }
+double dist(const AxisVector& a, double x, double y) {
+    return std::hypot(a[Axis::X] - x, a[Axis::Y] - y);
+}
 
 TEST(CornerArcs, RoundingAfterAnArcIsTangentToBoth) {
     // G3 from (0,0) about (0,10), R10, to (10,10), heading +Y; then left along Y10: a left turn

@@ -27,7 +27,9 @@ struct P2 {
     double x = 0;
     double y = 0;
 };
-double dist(P2 a, P2 b) { return std::hypot(a.x - b.x, a.y - b.y); }
+double dist(P2 a, P2 b) {
+    return std::hypot(a.x - b.x, a.y - b.y);
+}
 
 //! One programmed element: a line, or an arc from a to b about c.
 struct Element {
@@ -43,7 +45,9 @@ AxisVector at(P2 p) {
     v[Axis::Y] = p.y;
     return v;
 }
-P2 xy(const AxisVector& v) { return {v[Axis::X], v[Axis::Y]}; }
+P2 xy(const AxisVector& v) {
+    return {v[Axis::X], v[Axis::Y]};
+}
 
 double distance_to_segment(P2 p, P2 a, P2 b) {
     double dx = b.x - a.x, dy = b.y - a.y;
@@ -51,7 +55,9 @@ double distance_to_segment(P2 p, P2 a, P2 b) {
     return dist(p, {a.x + t * dx, a.y + t * dy});
 }
 
-double angle_of(P2 p, P2 c) { return std::atan2(p.y - c.y, p.x - c.x); }
+double angle_of(P2 p, P2 c) {
+    return std::atan2(p.y - c.y, p.x - c.x);
+}
 double ccw_from(double a0, double a1) {  // angle from a0 to a1 counter-clockwise, [0, 2π)
     double d = std::fmod(a1 - a0, 2 * pi);
     return d < 0 ? d + 2 * pi : d;

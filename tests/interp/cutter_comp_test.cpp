@@ -40,8 +40,7 @@ TEST(CutterComp, InchDiameterIsReadInProgramUnits) {
 TEST(CutterComp, NonPlaneBlocksWaitBehindTheHeldMove) {
     // The Z move and the coolant come between two planar moves: they happen at the corner,
     // after the first move has been settled, in program order.
-    std::vector<Move> moves = moves_of(
-        "G0 X-10 Y0 Z0\nG41.1 D4 G1 X0 Y0 F100\nX30\nM8\nG1 Z-1\nY30\nG40 X40\nM2\n");
+    std::vector<Move> moves = moves_of("G0 X-10 Y0 Z0\nG41.1 D4 G1 X0 Y0 F100\nX30\nM8\nG1 Z-1\nY30\nG40 X40\nM2\n");
     std::vector<std::string> kinds;
     for (const Move& m : moves) {
         if (const auto* line = std::get_if<Line>(&m.what)) {
@@ -135,8 +134,9 @@ TEST(CutterCompErrors, D0AndMissingTableEntry) {
 TEST(CutterCompErrors, RadiusLargerThanAnInsideArc) {
     Diagnostic d = error_of("G0 X0 Y-20\nG42.1 D24 G1 X0 Y0 F100\nG2 X20 Y0 R10\nG1 Y-10\n");
     EXPECT_EQ(where(d), "cutter-gouge 3:1");
-    EXPECT_EQ(d.message, "the tool radius 12.0000 mm is not smaller than the radius 10.0000 mm of this arc, "
-                         "which the tool cuts from inside");
+    EXPECT_EQ(d.message,
+              "the tool radius 12.0000 mm is not smaller than the radius 10.0000 mm of this arc, "
+              "which the tool cuts from inside");
 }
 
 TEST(CutterCompErrors, InsideCornerTooSmallForTheTool) {
@@ -148,8 +148,7 @@ TEST(CutterCompErrors, InsideCornerTooSmallForTheTool) {
 
 TEST(CutterCompErrors, StartAndCancelRules) {
     EXPECT_EQ(error_where("G41.1 D4 G2 X10 Y0 R5 F100\n"), "cutter-comp 1:1") << "arc start-up";
-    EXPECT_EQ(error_where("G0 X-10\nG41.1 D4 G1 X0 F100\nX10\nG40 G2 X20 R5\n"), "cutter-comp 4:1")
-        << "arc exit";
+    EXPECT_EQ(error_where("G0 X-10\nG41.1 D4 G1 X0 F100\nX10\nG40 G2 X20 R5\n"), "cutter-comp 4:1") << "arc exit";
     EXPECT_EQ(error_where("G0 X-1\nG41.1 D4 G1 X0 F100\nX10\n"), "cutter-comp 2:1")
         << "start-up shorter than the radius";
     EXPECT_EQ(error_where("G41.1 D4\nG42.1 D4\n"), "cutter-comp 2:1");

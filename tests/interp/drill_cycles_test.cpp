@@ -10,41 +10,35 @@ namespace {
 
 TEST(DrillCycles, G81G98ReturnsToTheInitialLevel) {
     EXPECT_EQ(texts("G0 Z20\nG98 G81 X10 Y10 Z-5 R2 F100\nX20\nG80\n"),
-              (Texts{"G0 X0.0000 Y0.0000 Z20.0000",
-                     "G0 X10.0000 Y10.0000 Z20.0000", "G0 X10.0000 Y10.0000 Z2.0000",
+              (Texts{"G0 X0.0000 Y0.0000 Z20.0000", "G0 X10.0000 Y10.0000 Z20.0000", "G0 X10.0000 Y10.0000 Z2.0000",
                      "G1 X10.0000 Y10.0000 Z-5.0000 F100.0000", "G0 X10.0000 Y10.0000 Z20.0000",
                      "G0 X20.0000 Y10.0000 Z20.0000", "G0 X20.0000 Y10.0000 Z2.0000",
                      "G1 X20.0000 Y10.0000 Z-5.0000 F100.0000", "G0 X20.0000 Y10.0000 Z20.0000"}));
 }
 
 TEST(DrillCycles, G99StaysAtRAndRepeatsInPlace) {
-    EXPECT_EQ(texts("G0 Z20\nG99 G81 X30 Z-5 R2 F100 L2\n"),
-              (Texts{"G0 X0.0000 Y0.0000 Z20.0000",
-                     "G0 X30.0000 Y0.0000 Z20.0000", "G0 X30.0000 Y0.0000 Z2.0000",
-                     "G1 X30.0000 Y0.0000 Z-5.0000 F100.0000", "G0 X30.0000 Y0.0000 Z2.0000",
-                     "G0 X30.0000 Y0.0000 Z2.0000",
-                     "G1 X30.0000 Y0.0000 Z-5.0000 F100.0000", "G0 X30.0000 Y0.0000 Z2.0000"}));
+    EXPECT_EQ(
+        texts("G0 Z20\nG99 G81 X30 Z-5 R2 F100 L2\n"),
+        (Texts{"G0 X0.0000 Y0.0000 Z20.0000", "G0 X30.0000 Y0.0000 Z20.0000", "G0 X30.0000 Y0.0000 Z2.0000",
+               "G1 X30.0000 Y0.0000 Z-5.0000 F100.0000", "G0 X30.0000 Y0.0000 Z2.0000", "G0 X30.0000 Y0.0000 Z2.0000",
+               "G1 X30.0000 Y0.0000 Z-5.0000 F100.0000", "G0 X30.0000 Y0.0000 Z2.0000"}));
 }
 
 TEST(DrillCycles, IncrementalRepeatsStepAndCountFromTheInitialLevel) {
     EXPECT_EQ(texts("G0 Z10\nG91 G99 G81 X1 Z-3 R-2 K2 F50\n"),
-              (Texts{"G0 X0.0000 Y0.0000 Z10.0000",
-                     "G0 X1.0000 Y0.0000 Z10.0000", "G0 X1.0000 Y0.0000 Z8.0000",
-                     "G1 X1.0000 Y0.0000 Z5.0000 F50.0000", "G0 X1.0000 Y0.0000 Z8.0000",
-                     "G0 X2.0000 Y0.0000 Z8.0000",
+              (Texts{"G0 X0.0000 Y0.0000 Z10.0000", "G0 X1.0000 Y0.0000 Z10.0000", "G0 X1.0000 Y0.0000 Z8.0000",
+                     "G1 X1.0000 Y0.0000 Z5.0000 F50.0000", "G0 X1.0000 Y0.0000 Z8.0000", "G0 X2.0000 Y0.0000 Z8.0000",
                      "G1 X2.0000 Y0.0000 Z5.0000 F50.0000", "G0 X2.0000 Y0.0000 Z8.0000"}));
 }
 
 TEST(DrillCycles, G83PecksBackToRAndDownToJustAboveTheLastDepth) {
-    EXPECT_EQ(texts("G0 Z1\nG99 G83 Z-3 R1 Q1.2 F50\n"),
-              (Texts{"G0 X0.0000 Y0.0000 Z1.0000", "G0 X0.0000 Y0.0000 Z1.0000",
-                     "G1 X0.0000 Y0.0000 Z-0.2000 F50.0000", "G0 X0.0000 Y0.0000 Z1.0000",
-                     "G0 X0.0000 Y0.0000 Z0.0540",
-                     "G1 X0.0000 Y0.0000 Z-1.4000 F50.0000", "G0 X0.0000 Y0.0000 Z1.0000",
-                     "G0 X0.0000 Y0.0000 Z-1.1460",
-                     "G1 X0.0000 Y0.0000 Z-2.6000 F50.0000", "G0 X0.0000 Y0.0000 Z1.0000",
-                     "G0 X0.0000 Y0.0000 Z-2.3460",
-                     "G1 X0.0000 Y0.0000 Z-3.0000 F50.0000", "G0 X0.0000 Y0.0000 Z1.0000"}));
+    EXPECT_EQ(
+        texts("G0 Z1\nG99 G83 Z-3 R1 Q1.2 F50\n"),
+        (Texts{"G0 X0.0000 Y0.0000 Z1.0000", "G0 X0.0000 Y0.0000 Z1.0000", "G1 X0.0000 Y0.0000 Z-0.2000 F50.0000",
+               "G0 X0.0000 Y0.0000 Z1.0000", "G0 X0.0000 Y0.0000 Z0.0540", "G1 X0.0000 Y0.0000 Z-1.4000 F50.0000",
+               "G0 X0.0000 Y0.0000 Z1.0000", "G0 X0.0000 Y0.0000 Z-1.1460", "G1 X0.0000 Y0.0000 Z-2.6000 F50.0000",
+               "G0 X0.0000 Y0.0000 Z1.0000", "G0 X0.0000 Y0.0000 Z-2.3460", "G1 X0.0000 Y0.0000 Z-3.0000 F50.0000",
+               "G0 X0.0000 Y0.0000 Z1.0000"}));
 }
 
 TEST(DrillCycles, WordsStayForTheNextHoleUntilG80) {
@@ -58,35 +52,34 @@ TEST(DrillCycles, G0G80InOneBlockMovesAndCancels) {
 }
 
 TEST(DrillCycles, TappingReversesTheSpindle) {
-    EXPECT_EQ(texts("S500 M3\nG0 Z5\nG98 G84 Z-3 R1 F100\n"),
-              (Texts{"S500", "M3", "G0 X0.0000 Y0.0000 Z5.0000", "G0 X0.0000 Y0.0000 Z5.0000",
-                     "G0 X0.0000 Y0.0000 Z1.0000", "G1 X0.0000 Y0.0000 Z-3.0000 F100.0000", "M4",
-                     "G1 X0.0000 Y0.0000 Z5.0000 F100.0000", "M3"}));
+    EXPECT_EQ(
+        texts("S500 M3\nG0 Z5\nG98 G84 Z-3 R1 F100\n"),
+        (Texts{"S500", "M3", "G0 X0.0000 Y0.0000 Z5.0000", "G0 X0.0000 Y0.0000 Z5.0000", "G0 X0.0000 Y0.0000 Z1.0000",
+               "G1 X0.0000 Y0.0000 Z-3.0000 F100.0000", "M4", "G1 X0.0000 Y0.0000 Z5.0000 F100.0000", "M3"}));
 }
 
 TEST(DrillCycles, FineBoringOrientsAndLeavesTheWallByQ) {
-    EXPECT_EQ(texts("S800 M3\nG0 Z20\nG98 G76 X10 Z-12 R2 Q0.5 P500 F100\n"),
-              (Texts{"S800", "M3", "G0 X0.0000 Y0.0000 Z20.0000", "G0 X10.0000 Y0.0000 Z20.0000",
-                     "G0 X10.0000 Y0.0000 Z2.0000", "G1 X10.0000 Y0.0000 Z-12.0000 F100.0000", "G4 P0.5000",
-                     "M19", "G0 X10.5000 Y0.0000 Z-12.0000", "G0 X10.5000 Y0.0000 Z20.0000",
-                     "G0 X10.0000 Y0.0000 Z20.0000", "M3"}));
+    EXPECT_EQ(
+        texts("S800 M3\nG0 Z20\nG98 G76 X10 Z-12 R2 Q0.5 P500 F100\n"),
+        (Texts{"S800", "M3", "G0 X0.0000 Y0.0000 Z20.0000", "G0 X10.0000 Y0.0000 Z20.0000",
+               "G0 X10.0000 Y0.0000 Z2.0000", "G1 X10.0000 Y0.0000 Z-12.0000 F100.0000", "G4 P0.5000", "M19",
+               "G0 X10.5000 Y0.0000 Z-12.0000", "G0 X10.5000 Y0.0000 Z20.0000", "G0 X10.0000 Y0.0000 Z20.0000", "M3"}));
 }
 
 TEST(DrillCycles, BackBoringGoesDownShiftedAndBoresUpwards) {
     EXPECT_EQ(texts("S800 M3\nG0 Z30\nG98 G87 X40 Z-5 R-20 Q1 P200 F80\n"),
               (Texts{"S800", "M3", "G0 X0.0000 Y0.0000 Z30.0000", "G0 X40.0000 Y0.0000 Z30.0000", "M19",
-                     "G0 X41.0000 Y0.0000 Z30.0000", "G0 X41.0000 Y0.0000 Z-20.0000",
-                     "G0 X40.0000 Y0.0000 Z-20.0000", "M3", "G1 X40.0000 Y0.0000 Z-5.0000 F80.0000",
-                     "G4 P0.2000", "M19", "G0 X41.0000 Y0.0000 Z-5.0000", "G0 X41.0000 Y0.0000 Z30.0000",
-                     "G0 X40.0000 Y0.0000 Z30.0000", "M3"}));
+                     "G0 X41.0000 Y0.0000 Z30.0000", "G0 X41.0000 Y0.0000 Z-20.0000", "G0 X40.0000 Y0.0000 Z-20.0000",
+                     "M3", "G1 X40.0000 Y0.0000 Z-5.0000 F80.0000", "G4 P0.2000", "M19", "G0 X41.0000 Y0.0000 Z-5.0000",
+                     "G0 X41.0000 Y0.0000 Z30.0000", "G0 X40.0000 Y0.0000 Z30.0000", "M3"}));
 }
 
 TEST(DrillCycles, MalformedCyclesAreLocated) {
-    EXPECT_EQ(error_where("G0 Z5\nG81 X1 Z-1 F60\n"), "missing-word 2:1");   // no R
-    EXPECT_EQ(error_where("G0 Z5\nG81 X1 R1 F60\n"), "missing-word 2:1");    // no Z
-    EXPECT_EQ(error_where("G0 Z5\nG83 X1 Z-1 R1 F60\n"), "bad-value 2:1");   // no Q
+    EXPECT_EQ(error_where("G0 Z5\nG81 X1 Z-1 F60\n"), "missing-word 2:1");  // no R
+    EXPECT_EQ(error_where("G0 Z5\nG81 X1 R1 F60\n"), "missing-word 2:1");   // no Z
+    EXPECT_EQ(error_where("G0 Z5\nG83 X1 Z-1 R1 F60\n"), "bad-value 2:1");  // no Q
     EXPECT_EQ(error_where("G0 Z5\nG81 X1 Z-1 R1 F60 K2.5\n"), "bad-value 2:19");
-    EXPECT_EQ(error_where("G0 Z5\nG81 X1 Z3 R1 F60\n"), "bad-cycle 2:11");   // R below the bottom
+    EXPECT_EQ(error_where("G0 Z5\nG81 X1 Z3 R1 F60\n"), "bad-cycle 2:11");  // R below the bottom
     EXPECT_EQ(error_where("G0 Z5\nG81 X1 Z-1 R1\n"), "no-feed 2:1");
     EXPECT_EQ(error_where("G0 Z5\nG83 X1 Z-100 R1 Q0.0001 F60\n"), "bad-value 2:17");
 }

@@ -14,13 +14,13 @@ namespace {
 TEST(GotoIndex, FindsTheNextLineWithTheNumberThenTheFirstFromTheStart) {
     const std::string program =
         "#1=0\n"
-        "N7 #1=#1+1\n"   // the first N7 of the program
+        "N7 #1=#1+1\n"  // the first N7 of the program
         "N7 G1 X#1 F100\n"
         "IF [#1 GE 3] GOTO 9\n"
-        "GOTO 7\n"       // forward: the N7 below, not the ones above
+        "GOTO 7\n"  // forward: the N7 below, not the ones above
         "G1 X100\n"
         "N7 G1 X[#1*10]\n"
-        "GOTO 7\n"       // nothing forward: the first N7 from the start
+        "GOTO 7\n"  // nothing forward: the first N7 from the start
         "N9 G1 X-1\n";
     EXPECT_EQ(xs(program), (std::vector<double>{1, 10, 2, 20, 3, -1}));
 }
@@ -58,13 +58,14 @@ TEST(GotoIndex, MissingNumberIsAlarm128) {
 // counted against the budget: 200 round trips read 4,000,000 lines, far beyond a budget of
 // 30,000. Now the program is read once for the index and each jump costs one block.
 TEST(GotoIndex, LinesBetweenJumpsAreReadOncePerProgram) {
-    const std::string program = "#1=0\n"
-                                "N1 #1=#1+1\n"
-                                "IF [#1 GE 200] GOTO 3\n"
-                                "GOTO 2\n" +
-                                std::string(10000, '\n') +
-                                "N2 GOTO 1\n"
-                                "N3 G1 X#1 F100\n";
+    const std::string program =
+        "#1=0\n"
+        "N1 #1=#1+1\n"
+        "IF [#1 GE 200] GOTO 3\n"
+        "GOTO 2\n" +
+        std::string(10000, '\n') +
+        "N2 GOTO 1\n"
+        "N3 G1 X#1 F100\n";
     InterpreterOptions options;
     options.max_blocks = 30000;
     EXPECT_EQ(xs(program, options), (std::vector<double>{200}));

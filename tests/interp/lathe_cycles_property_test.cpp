@@ -118,7 +118,8 @@ TEST(LatheCycleProperties, RandomMonotonicShapes) {
         const std::size_t contour_moves = c.shape.size() - 1;
         for (std::size_t i = 0; i + contour_moves + 3 < rough.size(); ++i) {
             const Line& l = rough[i];
-            if (!l.rapid && l.from[Axis::X] == l.to[Axis::X] && l.from[Axis::Z] != l.to[Axis::Z]) levels.insert(l.to[Axis::X]);
+            if (!l.rapid && l.from[Axis::X] == l.to[Axis::X] && l.from[Axis::Z] != l.to[Axis::Z])
+                levels.insert(l.to[Axis::X]);
         }
         for (auto it = levels.begin(); std::next(it) != levels.end(); ++it) {
             EXPECT_LE(*it - *std::next(it), c.depth + 1e-9);

@@ -61,15 +61,33 @@ TEST(LatheCycles, G71RoughsTheManualsExampleLevelByLevel) {
     const double ends[] = {-6, -6, -1, 6, 13, 37, 40.5, 64, 85};
     std::size_t i = 1;  // after the positioning rapid
     for (int k = 0; k < 9; ++k, i += 4) {
-        expect_path(path, i, {{levels[k], 132, true}, {levels[k], ends[k], false},
-                              {levels[k] + 1, ends[k] + 1, false}, {levels[k] + 1, 132, true}});
+        expect_path(path, i,
+                    {{levels[k], 132, true},
+                     {levels[k], ends[k], false},
+                     {levels[k] + 1, ends[k] + 1, false},
+                     {levels[k] + 1, 132, true}});
     }
     // The last pass follows the moved shape, then back to A at rapid.
-    expect_path(path, i, {{22, 134, true}, {22, 94, false}, {32, 64, false}, {32, 44, false}, {52, 34, false},
-                          {52, 14, false}, {72, -6, false}, {88, -6, true}, {88, 132, true}});
+    expect_path(path, i,
+                {{22, 134, true},
+                 {22, 94, false},
+                 {32, 64, false},
+                 {32, 44, false},
+                 {52, 34, false},
+                 {52, 14, false},
+                 {72, -6, false},
+                 {88, -6, true},
+                 {88, 132, true}});
     // G70: the shape as programmed from A, then back to A.
-    expect_path(path, i + 9, {{20, 132, true}, {20, 92, false}, {30, 62, false}, {30, 42, false}, {50, 32, false},
-                              {50, 12, false}, {70, -8, false}, {88, 132, true}});
+    expect_path(path, i + 9,
+                {{20, 132, true},
+                 {20, 92, false},
+                 {30, 62, false},
+                 {30, 42, false},
+                 {50, 32, false},
+                 {50, 12, false},
+                 {70, -8, false},
+                 {88, 132, true}});
     EXPECT_EQ(path.size(), i + 17);
 }
 
@@ -104,8 +122,11 @@ TEST(LatheCycles, G72FacesInLevelsOfZ) {
     const double ends[] = {20 - 10 * 5.5 / 6, 20 - 10 * 3.5 / 6, 17.5};
     std::size_t i = 1;
     for (int k = 0; k < 3; ++k, i += 4) {
-        expect_path(path, i, {{80, levels[k], true}, {ends[k], levels[k], false},
-                              {ends[k] + 0.5, levels[k] + 0.5, false}, {80, levels[k] + 0.5, true}});
+        expect_path(path, i,
+                    {{80, levels[k], true},
+                     {ends[k], levels[k], false},
+                     {ends[k] + 0.5, levels[k] + 0.5, false},
+                     {80, levels[k] + 0.5, true}});
     }
     expect_path(path, i, {{80, -5.5, true}, {20, -5.5, false}, {10, 0.5, false}, {10, 2, true}, {80, 2, true}});
 }
@@ -130,13 +151,24 @@ TEST(LatheCycles, G73RepeatsTheShapeWithShrinkingRelief) {
     const double shift[] = {16, 9, 2};
     std::size_t i = 1;
     for (double s : shift) {
-        expect_path(path, i, {{40 + s, 120 + s, true}, {40 + s, 100 + s, false}, {60 + s, 90 + s, false},
-                              {60 + s, 70 + s, false}, {80 + s, 50 + s, false}, {90 + s, 40 + s, false},
-                              {110, 160, true}});
+        expect_path(path, i,
+                    {{40 + s, 120 + s, true},
+                     {40 + s, 100 + s, false},
+                     {60 + s, 90 + s, false},
+                     {60 + s, 70 + s, false},
+                     {80 + s, 50 + s, false},
+                     {90 + s, 40 + s, false},
+                     {110, 160, true}});
         i += 7;
     }
-    expect_path(path, i, {{40, 120, true}, {40, 100, false}, {60, 90, false}, {60, 70, false}, {80, 50, false},
-                          {90, 40, false}, {110, 160, true}});
+    expect_path(path, i,
+                {{40, 120, true},
+                 {40, 100, false},
+                 {60, 90, false},
+                 {60, 70, false},
+                 {80, 50, false},
+                 {90, 40, false},
+                 {110, 160, true}});
 }
 
 TEST(LatheCycles, ProgramGoesOnAfterTheShapeAndG70FindsItFarAway) {
@@ -191,8 +223,8 @@ TEST(LatheCycles, FanucsErrors) {
     EXPECT_EQ(error_where("G71 U0 R0.5\n", lathe), "bad-value 1:5");
     EXPECT_EQ(error_where("G71 U1. W1.\n", lathe), "unused-word 1:9");
     // A P block that names Z makes type II (lathe_pockets_test.cpp): accepted.
-    EXPECT_FALSE(moves_of(std::string(head) + "G71 P10 Q20 U0.4 F0.2\nN10 G0 X30. Z1.\nN20 G1 Z-10.\nM30\n", lathe)
-                     .empty());
+    EXPECT_FALSE(
+        moves_of(std::string(head) + "G71 P10 Q20 U0.4 F0.2\nN10 G0 X30. Z1.\nN20 G1 Z-10.\nM30\n", lathe).empty());
     // A cycle inside the shape, and an unknown word.
     EXPECT_EQ(error_where(std::string(head) + "G71 P10 Q20 U0.4 F0.2\nN10 G0 X30.\nG70 P10 Q20\nN20 G1 Z-10.\n", lathe),
               "bad-cycle 5:1");

@@ -13,7 +13,7 @@ MachineConfig lathe_with_offset() {
     MachineConfig m = system_a_lathe();
     ToolEntry e;
     e.number = 1;
-    e.x_offset_mm = 1.0;   // radius
+    e.x_offset_mm = 1.0;  // radius
     e.x_wear_mm = 0.1;
     e.length_mm = 5.0;
     e.length_wear_mm = -0.2;
@@ -72,8 +72,10 @@ TEST(LatheOffsets, MacroVariablesReadAsA0iT) {
 TEST(LatheOffsets, G10PWritesWearAndGeometry) {
     const MachineConfig m = lathe_with_offset();
     // G10 P1 U0.2: wear X +0.2 on the diameter (0.1 radius) -> 0.2 radius; P10001 X4.: geometry 2.
-    auto moves = moves_of("G10 P1 U0.2\nG10 P10001 X4. W1. R0.8 Q2\n#100 = #2901\n#101 = #2301\nT0101\nG0 X20. Z0\n"
-                          "G0 Z[#100 + #101]\nM30\n", m);
+    auto moves = moves_of(
+        "G10 P1 U0.2\nG10 P10001 X4. W1. R0.8 Q2\n#100 = #2901\n#101 = #2301\nT0101\nG0 X20. Z0\n"
+        "G0 Z[#100 + #101]\nM30\n",
+        m);
     std::vector<Line> lines;
     for (const Move& move : moves) {
         if (const auto* l = std::get_if<Line>(&move.what)) lines.push_back(*l);
@@ -124,9 +126,10 @@ TEST(LatheNoseRadius, G42OffsetsTaperAndArcByTheNoseRadius) {
     // r = 0.4. Along Z at radius 10 the centre runs at 10.4; on the 45-degree taper from (10,-10)
     // to (20,-20) (x + z = 0) each end lies 0.4 from the line; the concave G2 of radius 10 about
     // (30,-20) is cut at radius 9.6.
-    auto moves = moves_of("T0101\nG0 X60. Z5.\nG42 G1 X20. Z2. F0.2\nG1 Z-10.\nX40. Z-20.\nG2 X60. Z-30. R10.\n"
-                          "G40 G0 X80.\n",
-                          lathe_with_noses());
+    auto moves = moves_of(
+        "T0101\nG0 X60. Z5.\nG42 G1 X20. Z2. F0.2\nG1 Z-10.\nX40. Z-20.\nG2 X60. Z-30. R10.\n"
+        "G40 G0 X80.\n",
+        lathe_with_noses());
     std::vector<Line> feeds;
     std::vector<Arc> arcs;
     for (const Move& m : moves) {

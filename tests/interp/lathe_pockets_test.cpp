@@ -44,12 +44,16 @@ TEST(LathePockets, G71TypeIIRoughsTheLevelsAndThePocket) {
     std::vector<Point> want{{25, 2, true}};
     auto from_start = [&](double level, double end) {
         if (want.back().z != 2) want.push_back({25, 2, true});
-        want.insert(want.end(), {{level, 2, true}, {level, end, false}, {level + 0.5, end + 0.5, false},
-                                 {25, end + 0.5, true}});
+        want.insert(want.end(),
+                    {{level, 2, true}, {level, end, false}, {level + 0.5, end + 0.5, false}, {25, end + 0.5, true}});
     };
     auto pocket = [&](double level, double from, double end) {
-        want.insert(want.end(), {{25, from, true}, {level + 2, from, true}, {level, from, false},
-                                 {level, end, false}, {level + 0.5, end + 0.5, false}, {25, end + 0.5, true}});
+        want.insert(want.end(), {{25, from, true},
+                                 {level + 2, from, true},
+                                 {level, from, false},
+                                 {level, end, false},
+                                 {level + 0.5, end + 0.5, false},
+                                 {25, end + 0.5, true}});
     };
     from_start(23, -40);
     from_start(21, -40);
@@ -59,8 +63,15 @@ TEST(LathePockets, G71TypeIIRoughsTheLevelsAndThePocket) {
     pocket(13, -12, -26.5);
     pocket(11, -14, -25.5);
     // Back to A's Z at r25, then the last pass along the shape, and back to A.
-    want.insert(want.end(), {{25, 2, true}, {15, 2, true}, {15, -10, false}, {10, -15, false}, {10, -25, false},
-                             {20, -30, false}, {20, -40, false}, {25, -40, true}, {25, 2, true}});
+    want.insert(want.end(), {{25, 2, true},
+                             {15, 2, true},
+                             {15, -10, false},
+                             {10, -15, false},
+                             {10, -25, false},
+                             {20, -30, false},
+                             {20, -40, false},
+                             {25, -40, true},
+                             {25, 2, true}});
     ASSERT_EQ(path.size(), want.size());
     for (std::size_t i = 0; i < want.size(); ++i) {
         EXPECT_NEAR(path[i].r, want[i].r, 1e-9) << "move " << i;
@@ -152,7 +163,8 @@ PocketCase random_pocket(std::mt19937& rng) {
                                    num(2 * c.start_r), num(uniform(0.4, 3)), num(uniform(0, 0.5)), num(c.u));
     for (std::size_t i = 0; i < c.shape.size(); ++i) {
         const std::string n = i == 0 ? "N10 " : i + 1 == c.shape.size() ? "N20 " : "";
-        text += fmt::format("{}{} X{} Z{}\n", n, i == 0 ? "G0" : "G1", num(2 * c.shape[i].second), num(c.shape[i].first));
+        text +=
+            fmt::format("{}{} X{} Z{}\n", n, i == 0 ? "G0" : "G1", num(2 * c.shape[i].second), num(c.shape[i].first));
     }
     c.program = text + "M30\n";
     for (auto& [pz, pr] : c.shape) {

@@ -7,11 +7,12 @@ namespace nckit::test {
 namespace {
 
 MachineConfig lathe(std::string_view machine_keys) {
-    std::string text = "[machine]\nname = \"t\"\ndiameter_mode = true\n" + std::string(machine_keys) +
-                       "\n[[axis]]\nname = \"X\"\nkind = \"linear\"\nmax_velocity = 100\nmax_acceleration = 500\nmax_jerk = 50000\n"
-                       "min = -10\nmax = 200\nsteps_per_unit = 800\n"
-                       "[[axis]]\nname = \"Z\"\nkind = \"linear\"\nmax_velocity = 100\nmax_acceleration = 500\nmax_jerk = 50000\n"
-                       "min = -300\nmax = 10\nsteps_per_unit = 800\n[spindle]\nmax_rpm = 4000\n";
+    std::string text =
+        "[machine]\nname = \"t\"\ndiameter_mode = true\n" + std::string(machine_keys) +
+        "\n[[axis]]\nname = \"X\"\nkind = \"linear\"\nmax_velocity = 100\nmax_acceleration = 500\nmax_jerk = 50000\n"
+        "min = -10\nmax = 200\nsteps_per_unit = 800\n"
+        "[[axis]]\nname = \"Z\"\nkind = \"linear\"\nmax_velocity = 100\nmax_acceleration = 500\nmax_jerk = 50000\n"
+        "min = -300\nmax = 10\nsteps_per_unit = 800\n[spindle]\nmax_rpm = 4000\n";
     auto config = parse_machine_config(text, "lathe.toml");
     if (!config) {
         ADD_FAILURE() << format_diagnostic(config.diagnostics().front());
@@ -20,9 +21,13 @@ MachineConfig lathe(std::string_view machine_keys) {
     return *config;
 }
 
-MachineConfig system_a() { return lathe("gcode_system = \"A\"\nstartup_gcodes = \"G18 G21 G40 G97 G99\""); }
+MachineConfig system_a() {
+    return lathe("gcode_system = \"A\"\nstartup_gcodes = \"G18 G21 G40 G97 G99\"");
+}
 
-const Line& line_at(const std::vector<Move>& moves, std::size_t i) { return std::get<Line>(moves.at(i).what); }
+const Line& line_at(const std::vector<Move>& moves, std::size_t i) {
+    return std::get<Line>(moves.at(i).what);
+}
 
 TEST(LatheSystem, FeedPerRevolutionAtPowerUp) {
     // No G98/G99: a Fanuc lathe is in G99, so F0.2 is 0.2 mm/rev; at 500 rpm that is 100 mm/min.
@@ -93,11 +98,12 @@ TEST(LatheSystem, SystemCReadsG70G71AsUnits) {
 }
 
 TEST(LatheSystem, StartupCodesErrorsPointIntoTheMachineFile) {
-    auto bad = parse_machine_config("[machine]\nname = \"t\"\ngcode_system = \"A\"\nstartup_gcodes = \"G18 G91\"\n"
-                                    "[[axis]]\nname = \"X\"\nkind = \"linear\"\nmax_velocity = 1\nmax_acceleration = 1\nmax_jerk = 1\n"
-                                    "min = 0\nmax = 1\nsteps_per_unit = 1\n[[axis]]\nname = \"Z\"\nkind = \"linear\"\nmax_velocity = 1\n"
-                                    "max_acceleration = 1\nmax_jerk = 1\nmin = 0\nmax = 1\nsteps_per_unit = 1\n",
-                                    "m.toml");
+    auto bad = parse_machine_config(
+        "[machine]\nname = \"t\"\ngcode_system = \"A\"\nstartup_gcodes = \"G18 G91\"\n"
+        "[[axis]]\nname = \"X\"\nkind = \"linear\"\nmax_velocity = 1\nmax_acceleration = 1\nmax_jerk = 1\n"
+        "min = 0\nmax = 1\nsteps_per_unit = 1\n[[axis]]\nname = \"Z\"\nkind = \"linear\"\nmax_velocity = 1\n"
+        "max_acceleration = 1\nmax_jerk = 1\nmin = 0\nmax = 1\nsteps_per_unit = 1\n",
+        "m.toml");
     ASSERT_TRUE(bad);
     RunResult run = run_program("G0 X0\n", *bad);
     ASSERT_TRUE(run.error);
@@ -112,11 +118,12 @@ TEST(LatheSystem, StartupCodesErrorsPointIntoTheMachineFile) {
 }
 
 TEST(LatheSystem, MillsHaveNoGCodeSystem) {
-    auto mill = parse_machine_config("[machine]\nname = \"m\"\ngcode_system = \"A\"\n"
-                                     "[[axis]]\nname = \"X\"\nkind = \"linear\"\nmax_velocity = 1\nmax_acceleration = 1\nmax_jerk = 1\n"
-                                     "min = 0\nmax = 1\nsteps_per_unit = 1\n[[axis]]\nname = \"Y\"\nmax_velocity = 1\n"
-                                     "max_acceleration = 1\nmax_jerk = 1\nmin = 0\nmax = 1\nsteps_per_unit = 1\n",
-                                     "mill.toml");
+    auto mill = parse_machine_config(
+        "[machine]\nname = \"m\"\ngcode_system = \"A\"\n"
+        "[[axis]]\nname = \"X\"\nkind = \"linear\"\nmax_velocity = 1\nmax_acceleration = 1\nmax_jerk = 1\n"
+        "min = 0\nmax = 1\nsteps_per_unit = 1\n[[axis]]\nname = \"Y\"\nmax_velocity = 1\n"
+        "max_acceleration = 1\nmax_jerk = 1\nmin = 0\nmax = 1\nsteps_per_unit = 1\n",
+        "mill.toml");
     ASSERT_FALSE(mill);
     EXPECT_EQ(mill.diagnostics().front().location.line, 3u);
     auto bad_value = parse_machine_config("[machine]\nname = \"m\"\ngcode_system = \"D\"\n", "x.toml");

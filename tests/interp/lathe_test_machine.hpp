@@ -11,11 +11,12 @@ namespace nckit::test {
 
 inline MachineConfig lathe_machine(std::string_view machine_keys, double travel_mm = 200) {
     const std::string limits = "min = -" + std::to_string(travel_mm) + "\nmax = " + std::to_string(travel_mm) + "\n";
-    std::string text = "[machine]\nname = \"t\"\ndiameter_mode = true\n" + std::string(machine_keys) +
-                       "\n[[axis]]\nname = \"X\"\nkind = \"linear\"\nmax_velocity = 100\nmax_acceleration = 500\nmax_jerk = 50000\n" +
-                       limits + "steps_per_unit = 800\n" +
-                       "[[axis]]\nname = \"Z\"\nkind = \"linear\"\nmax_velocity = 100\nmax_acceleration = 500\nmax_jerk = 50000\n" + limits +
-                       "steps_per_unit = 800\n[spindle]\nmax_rpm = 4000\n";
+    std::string text =
+        "[machine]\nname = \"t\"\ndiameter_mode = true\n" + std::string(machine_keys) +
+        "\n[[axis]]\nname = \"X\"\nkind = \"linear\"\nmax_velocity = 100\nmax_acceleration = 500\nmax_jerk = 50000\n" +
+        limits + "steps_per_unit = 800\n" +
+        "[[axis]]\nname = \"Z\"\nkind = \"linear\"\nmax_velocity = 100\nmax_acceleration = 500\nmax_jerk = 50000\n" +
+        limits + "steps_per_unit = 800\n[spindle]\nmax_rpm = 4000\n";
     auto config = parse_machine_config(text, "lathe.toml");
     if (!config) {
         ADD_FAILURE() << format_diagnostic(config.diagnostics().front());

@@ -41,9 +41,9 @@ std::string nested_calls(const std::string& call, int depth) {
 
 TEST(MacroCalls, ArgumentSpecificationOne) {
     EXPECT_EQ(locals_after("G65 P9000 A1 B2 C3 I4 J5 K6 D7 E8 F9 H11 M13 Q17 R18 S19 T20 U21 V22 W23 X24 Y25 Z26"),
-              expected_locals({{1, 1},   {2, 2},   {3, 3},   {4, 4},   {5, 5},   {6, 6},   {7, 7},   {8, 8},
-                               {9, 9},   {11, 11}, {13, 13}, {17, 17}, {18, 18}, {19, 19}, {20, 20}, {21, 21},
-                               {22, 22}, {23, 23}, {24, 24}, {25, 25}, {26, 26}}));
+              expected_locals({{1, 1},   {2, 2},   {3, 3},   {4, 4},   {5, 5},   {6, 6},   {7, 7},
+                               {8, 8},   {9, 9},   {11, 11}, {13, 13}, {17, 17}, {18, 18}, {19, 19},
+                               {20, 20}, {21, 21}, {22, 22}, {23, 23}, {24, 24}, {25, 25}, {26, 26}}));
 }
 
 TEST(MacroCalls, ArgumentSpecificationTwo) {
@@ -104,15 +104,15 @@ TEST(MacroCalls, ModalCallAfterEveryMoveBlockUntilG67) {
     const char* program =
         "G66 P100 A5\n"
         "G1 X10 F100\n"
-        "S1000 M3\n"   // no move: no call
-        "G4 P100\n"    // no move: no call
+        "S1000 M3\n"  // no move: no call
+        "G4 P100\n"   // no move: no call
         "X20\n"
         "G67\n"
         "X30\n"
         "M30\n"
         "O100\n"
-        "G1 Z-#1\n"    // the macro's own moves call nothing
-        "#1=#1+1\n"    // its locals are its own: the next call gets A5 again
+        "G1 Z-#1\n"  // the macro's own moves call nothing
+        "#1=#1+1\n"  // its locals are its own: the next call gets A5 again
         "Z0\n"
         "M99\n";
     EXPECT_EQ(texts(program, wide_mill()),

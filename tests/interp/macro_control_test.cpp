@@ -29,9 +29,9 @@ TEST(MacroControl, GotoSearchesForwardFirstThenFromTheStart) {
         "N7 G1 X1 F100\n"
         "#1=#1+1\n"
         "IF [#1 EQ 2] GOTO 9\n"
-        "GOTO 7\n"          // forward: the N7 below
+        "GOTO 7\n"  // forward: the N7 below
         "N7 G1 X7\n"
-        "GOTO 7\n"          // nothing forward: the N7 at the top
+        "GOTO 7\n"  // nothing forward: the N7 at the top
         "N9 G1 X9\n";
     EXPECT_EQ(xs(program), (std::vector<double>{1, 7, 1, 9}));
 }

@@ -33,11 +33,11 @@ TEST(MacroExpressions, FanucPrecedence) {
     EXPECT_EQ(value_of("[1+2]*3"), 9.0);
     EXPECT_EQ(value_of("10-4-3"), 3.0);
     EXPECT_EQ(value_of("12/3/2"), 2.0);
-    EXPECT_EQ(value_of("2+3*4 MOD 5"), 4.0);      // (3*4) MOD 5 = 2, then 2 + 2
-    EXPECT_EQ(value_of("1 OR 2 AND 3"), 3.0);     // 2 AND 3 = 2 first, then 1 OR 2
-    EXPECT_EQ(value_of("6 AND 3 + 1"), 3.0);      // (6 AND 3) + 1
-    EXPECT_EQ(value_of("2+SQRT[9]*2"), 8.0);      // functions first
-    EXPECT_EQ(value_of("8/2*4"), 16.0);           // left to right, not 8/(2*4)
+    EXPECT_EQ(value_of("2+3*4 MOD 5"), 4.0);   // (3*4) MOD 5 = 2, then 2 + 2
+    EXPECT_EQ(value_of("1 OR 2 AND 3"), 3.0);  // 2 AND 3 = 2 first, then 1 OR 2
+    EXPECT_EQ(value_of("6 AND 3 + 1"), 3.0);   // (6 AND 3) + 1
+    EXPECT_EQ(value_of("2+SQRT[9]*2"), 8.0);   // functions first
+    EXPECT_EQ(value_of("8/2*4"), 16.0);        // left to right, not 8/(2*4)
     EXPECT_EQ(value_of("[[[[[2]]]]]*3"), 6.0);
 }
 
@@ -116,7 +116,7 @@ TEST(MacroExpressions, RootsPowersAndLogarithms) {
 TEST(MacroExpressions, CodeConversions) {
     EXPECT_EQ(value_of("BCD[1234]"), 4660.0);  // 0x1234
     EXPECT_EQ(value_of("BIN[4660]"), 1234.0);
-    EXPECT_EQ(value_of("BIN[18]"), 12.0);      // 0x12
+    EXPECT_EQ(value_of("BIN[18]"), 12.0);  // 0x12
     EXPECT_EQ(value_of("BCD[0]"), 0.0);
     EXPECT_EQ(value_of("BIN[BCD[9876]]"), 9876.0);
 }
@@ -128,7 +128,7 @@ TEST(MacroExpressions, AdpIsIdentityWhereNumbersAreReadWithAPoint) {
 
 TEST(MacroExpressions, DivisionByZeroIsAlarm112AtTheOperator) {
     EXPECT_EQ(alarm_of("G1 F100\n#1=1/0\n"), "112 2:5");
-    EXPECT_EQ(alarm_of("#1=1/#0\n"), "112 1:5");   // vacant counts as 0
+    EXPECT_EQ(alarm_of("#1=1/#0\n"), "112 1:5");  // vacant counts as 0
     EXPECT_EQ(alarm_of("#1=5 MOD 0\n"), "112 1:6");
     EXPECT_EQ(alarm_of("#1=5 MOD 0.4\n"), "112 1:6");  // rounds to 0
     EXPECT_EQ(alarm_of("G1 X[1/#5] F100\n"), "112 1:7");

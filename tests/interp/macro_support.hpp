@@ -42,8 +42,7 @@ inline std::vector<double> xs(std::string_view program, InterpreterOptions optio
 //! not be negative (x_of in the expression tests reads negatives, to 0.001).
 inline std::optional<double> value_after(std::string_view setup) {
     constexpr std::int64_t mark = 99998;
-    std::string program = std::string(setup) +
-                          "\nG21\nIF [#1 EQ #0] GOTO 99999\nG64 P#1\nN99998 G1 X0 F100\nN99999\n";
+    std::string program = std::string(setup) + "\nG21\nIF [#1 EQ #0] GOTO 99999\nG64 P#1\nN99998 G1 X0 F100\nN99999\n";
     std::optional<double> out;
     for (const Move& move : moves_of(program, wide_mill())) {
         const auto* line = std::get_if<Line>(&move.what);

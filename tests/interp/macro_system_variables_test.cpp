@@ -122,9 +122,9 @@ TEST(MacroSystemVariables, EndPointInWorkCoordinates) {
     EXPECT_EQ(value_after("G1 X1 Y2 Z3 F100\n#1=#5001+#5002*10+#5003*100"), 321.0);
     EXPECT_EQ(value_after("G10 L2 P1 X100\nG0 X5\n#1=#5001"), 5.0);
     EXPECT_EQ(value_after("G10 L2 P1 X100\nG0 X5\n#1=#5041"), 5.0);
-    EXPECT_EQ(value_after("G10 L2 P1 X100\nG0 X5\n#1=#5021"), 105.0);  // machine coordinates
-    EXPECT_EQ(value_after("G20\nG0 X1\n#1=#5001+#5021"), 2.0);          // inch
-    EXPECT_EQ(value_after("#1=#5004"), std::nullopt);                 // a 3-axis mill has no 4th axis
+    EXPECT_EQ(value_after("G10 L2 P1 X100\nG0 X5\n#1=#5021"), 105.0);             // machine coordinates
+    EXPECT_EQ(value_after("G20\nG0 X1\n#1=#5001+#5021"), 2.0);                    // inch
+    EXPECT_EQ(value_after("#1=#5004"), std::nullopt);                             // a 3-axis mill has no 4th axis
     EXPECT_EQ(value_after("G0 X10\nG92 X0\nG0 X3\n#1=#5001+#5021*100"), 1303.0);  // G92 counts
 }
 
@@ -146,7 +146,7 @@ TEST(MacroSystemVariables, WorkOffsetsReadBack) {
     EXPECT_EQ(value_after("G10 L2 P2 X7 Y8\n#1=#5241+#5242*10"), 87.0);
     EXPECT_EQ(value_after("G10 L2 P6 Z4\n#1=#5323"), 4.0);
     EXPECT_EQ(value_of("#5221+#5222+#5223"), 0.0);
-    EXPECT_EQ(value_of("#5226"), std::nullopt);  // G54 of a 6th axis this machine lacks
+    EXPECT_EQ(value_of("#5226"), std::nullopt);    // G54 of a 6th axis this machine lacks
     EXPECT_EQ(alarm_of("#1=#5227\n"), "115 1:4");  // between two systems
 }
 

@@ -9,8 +9,7 @@ namespace {
 
 //! 1 when `condition` holds after `setup`, 0 when not.
 double holds(std::string_view setup, std::string_view condition) {
-    std::optional<double> v =
-        value_after(std::string(setup) + "\n#1=0\nIF [" + std::string(condition) + "] THEN #1=1");
+    std::optional<double> v = value_after(std::string(setup) + "\n#1=0\nIF [" + std::string(condition) + "] THEN #1=1");
     return v.value_or(-1);
 }
 
@@ -54,7 +53,7 @@ TEST(MacroVariables, ReadOnlySystemVariablesAreAlarm116) {
 TEST(MacroVariables, IndirectNumbers) {
     EXPECT_EQ(value_after("#101=7\n#2=1\n#1=#[#2+100]"), 7.0);
     EXPECT_EQ(value_after("#2=1\n#[#2+100]=9\n#1=#101"), 9.0);
-    EXPECT_EQ(value_after("#3=4\n#1=#[2.6]"), 4.0);  // the number is rounded: #3
+    EXPECT_EQ(value_after("#3=4\n#1=#[2.6]"), 4.0);    // the number is rounded: #3
     EXPECT_EQ(value_after("#1=#[#5]"), std::nullopt);  // vacant names #0
     EXPECT_EQ(value_after("#2=3\n#3=102\n#102=11\n#1=#[#[#2]]"), 11.0);
 }
@@ -102,8 +101,7 @@ TEST(MacroVariables, SubprogramSharesItsCallersLocals) {
         "M99\n";
     EXPECT_EQ(xs(program), (std::vector<double>{6}));
     // Inside a macro, M98 shares the macro's locals.
-    EXPECT_EQ(xs("G65 P100 A3\nM30\nO100\nM98 P200\nG1 X#2 F100\nM99\nO200\n#2=#1*2\nM99\n"),
-              (std::vector<double>{6}));
+    EXPECT_EQ(xs("G65 P100 A3\nM30\nO100\nM98 P200\nG1 X#2 F100\nM99\nO200\n#2=#1*2\nM99\n"), (std::vector<double>{6}));
 }
 
 TEST(MacroVariables, CommonVariablesAreSharedByEveryLevel) {

@@ -48,11 +48,11 @@ TEST(CornerWords, RoundingBeforeAnArcIsTangentToBoth) {
 }
 
 TEST(CornerWords, Errors) {
-    EXPECT_EQ(error_where("G0 X0 Y0\nG1 X10 F100 ,R20\nY10\n"), "bad-corner 2:13");  // does not fit
-    EXPECT_EQ(error_where("G0 X0 Y0\nG0 X10 ,R2\nY10\n"), "bad-corner 2:8");          // not G1
-    EXPECT_EQ(error_where("G0 X0 Y0\nG1 X10 F100 ,R2\nM8\nY10\n"), "bad-corner 2:13"); // no move next
-    EXPECT_EQ(error_where("G0 X0 Y0\nG1 X10 F100 ,C2\nZ-5\n"), "bad-corner 2:13");    // next leaves the plane
-    EXPECT_EQ(error_where("G0 X0 Y0\nG1 X10 F100 ,R2\nX20\n"), "bad-corner 2:13");    // straight on
+    EXPECT_EQ(error_where("G0 X0 Y0\nG1 X10 F100 ,R20\nY10\n"), "bad-corner 2:13");     // does not fit
+    EXPECT_EQ(error_where("G0 X0 Y0\nG0 X10 ,R2\nY10\n"), "bad-corner 2:8");            // not G1
+    EXPECT_EQ(error_where("G0 X0 Y0\nG1 X10 F100 ,R2\nM8\nY10\n"), "bad-corner 2:13");  // no move next
+    EXPECT_EQ(error_where("G0 X0 Y0\nG1 X10 F100 ,C2\nZ-5\n"), "bad-corner 2:13");      // next leaves the plane
+    EXPECT_EQ(error_where("G0 X0 Y0\nG1 X10 F100 ,R2\nX20\n"), "bad-corner 2:13");      // straight on
     EXPECT_EQ(error_where("G1 X10 F100 ,Q2\n"), "syntax 1:13");
     EXPECT_EQ(error_where("G1 X10 F100 ,R0\nY1\n"), "bad-value 1:13");
 }

@@ -34,8 +34,7 @@ TEST(ToolLength, G44SubtractsIt) {
 }
 
 TEST(ToolLength, G43WithoutHTakesTheToolInTheSpindle) {
-    EXPECT_EQ(texts("T2 M6\nG43 G0 Z1\n", mill_with_tools()),
-              (Texts{"T2", "M6", "G0 X0.0000 Y0.0000 Z51.0000"}));
+    EXPECT_EQ(texts("T2 M6\nG43 G0 Z1\n", mill_with_tools()), (Texts{"T2", "M6", "G0 X0.0000 Y0.0000 Z51.0000"}));
 }
 
 TEST(ToolLength, AnHWordUnderG43SwitchesTheOffset) {
@@ -74,21 +73,20 @@ TEST(ToolChange, G30GoesToTheToolChangePosition) {
     MachineConfig m = default_mill();
     m.axes[2].tool_change = 150.0;
     EXPECT_EQ(texts("G91 G30 Z0\nG0 G28 G91 Z0\n", m),
-              (Texts{"G0 X0.0000 Y0.0000 Z0.0000", "G0 X0.0000 Y0.0000 Z150.0000",
-                     "G0 X0.0000 Y0.0000 Z150.0000", "G0 X0.0000 Y0.0000 Z0.0000"}));
+              (Texts{"G0 X0.0000 Y0.0000 Z0.0000", "G0 X0.0000 Y0.0000 Z150.0000", "G0 X0.0000 Y0.0000 Z150.0000",
+                     "G0 X0.0000 Y0.0000 Z0.0000"}));
 }
 
 TEST(ToolTableWrites, G10L10ToL13SetLengthsAndRadii) {
     std::string program =
         "G10 L10 P3 R20\nG10 L11 P3 R-0.5\nG10 L12 P3 R4\nG10 L13 P3 R0.1\n"
         "G43 H3 G0 Z0\n#100 = #2003\n#101 = #2203\n#102 = #2403\n#103 = #2603\nG49 G0 X#100 Y#101\nX#102 Y#103\n";
-    EXPECT_EQ(texts(program), (Texts{"G0 X0.0000 Y0.0000 Z19.5000", "G0 X-0.5000 Y20.0000 Z19.5000",
-                                     "G0 X0.1000 Y4.0000 Z19.5000"}));
+    EXPECT_EQ(texts(program),
+              (Texts{"G0 X0.0000 Y0.0000 Z19.5000", "G0 X-0.5000 Y20.0000 Z19.5000", "G0 X0.1000 Y4.0000 Z19.5000"}));
 }
 
 TEST(ToolTableWrites, G91AddsAndLinuxcncFormSetsZ) {
-    EXPECT_EQ(texts("G10 L1 P4 Z10 R3\nG91 G10 L1 P4 R2\nG90 G43 H4 G0 Z0\n"),
-              (Texts{"G0 X0.0000 Y0.0000 Z12.0000"}));
+    EXPECT_EQ(texts("G10 L1 P4 Z10 R3\nG91 G10 L1 P4 R2\nG90 G43 H4 G0 Z0\n"), (Texts{"G0 X0.0000 Y0.0000 Z12.0000"}));
 }
 
 TEST(ToolTableWrites, VariablesWriteTheTable) {

@@ -45,8 +45,8 @@ TEST(Motion, ZeroLengthMoveIsStillAMove) {
 
 TEST(Motion, IncrementalAndAbsoluteDistance) {
     EXPECT_EQ(texts("G0 X10 Y10\nG91 G0 X5 Y-2\nX1\nG90 X0\n"),
-              (Texts{"G0 X10.0000 Y10.0000 Z0.0000", "G0 X15.0000 Y8.0000 Z0.0000",
-                     "G0 X16.0000 Y8.0000 Z0.0000", "G0 X0.0000 Y8.0000 Z0.0000"}));
+              (Texts{"G0 X10.0000 Y10.0000 Z0.0000", "G0 X15.0000 Y8.0000 Z0.0000", "G0 X16.0000 Y8.0000 Z0.0000",
+                     "G0 X0.0000 Y8.0000 Z0.0000"}));
 }
 
 TEST(Motion, SequenceNumberAndLocationTravelWithTheMove) {
@@ -142,8 +142,7 @@ TEST(Motion, G28WithoutAxisWordsSendsEveryAxisHome) {
     m.axes[0].home = 100;
     m.axes[1].home = -50;
     m.axes[2].home = 20;
-    EXPECT_EQ(texts("G0 X1 Y2 Z3\nG28\n", m),
-              (Texts{"G0 X1.0000 Y2.0000 Z3.0000", "G0 X100.0000 Y-50.0000 Z20.0000"}));
+    EXPECT_EQ(texts("G0 X1 Y2 Z3\nG28\n", m), (Texts{"G0 X1.0000 Y2.0000 Z3.0000", "G0 X100.0000 Y-50.0000 Z20.0000"}));
 }
 
 TEST(Motion, MachineStartsAtHome) {

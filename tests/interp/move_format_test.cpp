@@ -158,9 +158,8 @@ TEST(MoveJson, LinearWithEveryKey) {
     line.to = xyz(1.5, 2, -0.25);
     line.feed.mm_per_min = 600;
     line.path.exact_stop = true;
-    EXPECT_EQ(json(make(line, 7, 10)),
-              R"({"line":7,"n":10,"kind":"linear","start":{"X":0,"Y":0,"Z":0},)"
-              R"("end":{"X":1.5,"Y":2,"Z":-0.25},"feed_mm_min":600,"exact_stop":true})");
+    EXPECT_EQ(json(make(line, 7, 10)), R"({"line":7,"n":10,"kind":"linear","start":{"X":0,"Y":0,"Z":0},)"
+                                       R"("end":{"X":1.5,"Y":2,"Z":-0.25},"feed_mm_min":600,"exact_stop":true})");
 }
 
 TEST(MoveJson, RapidHasNoFeed) {
@@ -197,9 +196,8 @@ TEST(MoveJson, SyncAndDwell) {
     SyncMove sync;
     sync.to = xyz(0, 0, -20);
     sync.feed = Feed{FeedMode::per_revolution, 750, 1.5};
-    EXPECT_EQ(json(make(sync), lathe()),
-              R"({"line":3,"kind":"sync","start":{"X":0,"Z":0},"end":{"X":0,"Z":-20},)"
-              R"("feed_mm_min":750,"feed_mm_rev":1.5})");
+    EXPECT_EQ(json(make(sync), lathe()), R"({"line":3,"kind":"sync","start":{"X":0,"Z":0},"end":{"X":0,"Z":-20},)"
+                                         R"("feed_mm_min":750,"feed_mm_rev":1.5})");
     EXPECT_EQ(json(make(Dwell{0.25})), R"({"line":3,"kind":"dwell","seconds":0.25})");
 }
 

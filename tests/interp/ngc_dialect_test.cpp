@@ -17,7 +17,9 @@ MachineConfig linuxcnc_mill() {
     return machine;
 }
 
-Diagnostic ngc_error(std::string_view program) { return error_of(program, linuxcnc_mill()); }
+Diagnostic ngc_error(std::string_view program) {
+    return error_of(program, linuxcnc_mill());
+}
 
 std::string at(const Diagnostic& d) {
     return std::to_string(d.location.line) + ":" + std::to_string(d.location.column) + " " + d.message;
@@ -115,8 +117,8 @@ o20 do
 o20 while [#2 LT 2]
 M2
 )");
-    EXPECT_EQ(got, (std::vector<std::string>{"1.0000 0.0000 0.0000", "3.0000 0.0000 0.0000",
-                                             "3.0000 1.0000 0.0000", "3.0000 2.0000 0.0000"}));
+    EXPECT_EQ(got, (std::vector<std::string>{"1.0000 0.0000 0.0000", "3.0000 0.0000 0.0000", "3.0000 1.0000 0.0000",
+                                             "3.0000 2.0000 0.0000"}));
 }
 
 TEST(NgcDialect, ExpressionsAsLinuxCncComputesThem) {
@@ -125,8 +127,8 @@ G0 X[1 AND 2] Y[ATAN[1]/[-1]] Z[EXISTS[#<nope>]]
 G0 X[1 + 2 * 3 ** 2] Y[[1 EQ 1.0000001] + [3 GT 2 OR 0]] Z[ROUND[2.5]]
 M2
 )");
-    EXPECT_EQ(got, (std::vector<std::string>{"8.0000 2.0000 -3.0000", "1.0000 135.0000 0.0000",
-                                             "19.0000 2.0000 3.0000"}));
+    EXPECT_EQ(got,
+              (std::vector<std::string>{"8.0000 2.0000 -3.0000", "1.0000 135.0000 0.0000", "19.0000 2.0000 3.0000"}));
 }
 
 TEST(NgcDialect, SettingsOfOneLineReadTheOldValues) {
@@ -140,8 +142,7 @@ G0 X#<_x> Y[#<_y> + #<_metric>] Z[#<_feed> / 100]
 G0 X[#<_motion_mode>] Y#5420
 M2
 )");
-    EXPECT_EQ(got, (std::vector<std::string>{"3.0000 4.0000 0.0000", "3.0000 5.0000 2.5000",
-                                             "0.0000 3.0000 2.5000"}));
+    EXPECT_EQ(got, (std::vector<std::string>{"3.0000 4.0000 0.0000", "3.0000 5.0000 2.5000", "0.0000 3.0000 2.5000"}));
 }
 
 TEST(NgcDialect, DwellPIsSeconds) {

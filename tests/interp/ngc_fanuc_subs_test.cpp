@@ -38,9 +38,10 @@ std::vector<std::string> lines_of(std::string_view program, const MachineConfig&
 
 TEST(NgcFanucSubs, M98CallsTheNumberedBlockLTimesSharingParameters) {
     auto got = lines_of("#1 = 0\nM98 P1 L3\nG0 Y#1\nM30\nO1\n#1 = [#1 + 1]\nG0 X#1\nM99\n%\n");
-    EXPECT_EQ(got, (std::vector<std::string>{
-                       "0.0000 0.0000 0.0000 -> 1.0000 0.0000 0.0000", "1.0000 0.0000 0.0000 -> 2.0000 0.0000 0.0000",
-                       "2.0000 0.0000 0.0000 -> 3.0000 0.0000 0.0000", "3.0000 0.0000 0.0000 -> 3.0000 3.0000 0.0000"}));
+    EXPECT_EQ(got,
+              (std::vector<std::string>{
+                  "0.0000 0.0000 0.0000 -> 1.0000 0.0000 0.0000", "1.0000 0.0000 0.0000 -> 2.0000 0.0000 0.0000",
+                  "2.0000 0.0000 0.0000 -> 3.0000 0.0000 0.0000", "3.0000 0.0000 0.0000 -> 3.0000 3.0000 0.0000"}));
 }
 
 TEST(NgcFanucSubs, PFindsTheFirstBlockOfThatNumberAndL0CallsNothing) {
@@ -56,8 +57,9 @@ TEST(NgcFanucSubs, NestedCallsAndM99InTheMainProgramEndsIt) {
 }
 
 TEST(NgcFanucSubs, ComputedONumbers) {
-    auto got = lines_of("#2 = 10\n#<_n> = 100\nO[#2 * 10] call\nM98 P[2 * 100]\no#<_n> call\nM30\n"
-                        "O100 sub\nG91 G0 X1\nG90\nO100 endsub\nO200\nG0 Y5\nM99\n");
+    auto got = lines_of(
+        "#2 = 10\n#<_n> = 100\nO[#2 * 10] call\nM98 P[2 * 100]\no#<_n> call\nM30\n"
+        "O100 sub\nG91 G0 X1\nG90\nO100 endsub\nO200\nG0 Y5\nM99\n");
     ASSERT_EQ(got.size(), 3u);
     EXPECT_EQ(got[1], "1.0000 0.0000 0.0000 -> 1.0000 5.0000 0.0000");
     EXPECT_EQ(got[2], "1.0000 5.0000 0.0000 -> 2.0000 5.0000 0.0000");
@@ -82,7 +84,8 @@ TEST(NgcFanucSubs, ErrorsAsLinuxCncGivesThem) {
               "3:1 o1 is a Fanuc-style sub: call it with M98 P1, not with `call`");
     EXPECT_EQ(at(error_of("M98 P1\nM30\nO1 sub\nG0 X1\nO1 endsub\n", m)),
               "3:1 o1 sub is called with `o1 call`, not with M98");
-    EXPECT_EQ(at(error_of("%\nO2 call\n%\nO2 sub\nO2 endsub\n", m)), "2:1 subroutine o<2> not found before the closing %");
+    EXPECT_EQ(at(error_of("%\nO2 call\n%\nO2 sub\nO2 endsub\n", m)),
+              "2:1 subroutine o<2> not found before the closing %");
     EXPECT_EQ(at(error_of("%\nM98 P7\n%\nO7\nM99\n", m)), "2:1 subroutine O7 not found before the closing %");
     EXPECT_EQ(at(error_of("M98 P1 L-1\nM30\n", m)), "1:8 M98 L-1: the repeat count is a whole number 0-9999");
     // An M98 sub is a call level of its own: the caller's named locals are not there.
@@ -122,10 +125,11 @@ TEST(NgcCycles, TappingUnderG18AndG19FeedsWhereLinuxCncFeeds) {
     // rs274: G18 `G84 X1 Z2 Y0.5 R3` from Y2 feeds to (0.5, 2, 1) and back to (3, 2, 1), the
     // point meant with X Y Z turned round; the next move starts there.
     auto g18 = lines_of("G18 G99 M3 S100 F10\nG0 X0 Y2 Z0\nG84 X1 Z2 Y0.5 R3\nG80 G0 X0\nM2\n");
-    EXPECT_EQ(g18, (std::vector<std::string>{
-                       "0.0000 0.0000 0.0000 -> 0.0000 2.0000 0.0000", "0.0000 2.0000 0.0000 -> 0.0000 3.0000 0.0000",
-                       "0.0000 3.0000 0.0000 -> 1.0000 3.0000 2.0000", "1.0000 3.0000 2.0000 -> 0.5000 2.0000 1.0000",
-                       "0.5000 2.0000 1.0000 -> 3.0000 2.0000 1.0000", "3.0000 2.0000 1.0000 -> 0.0000 3.0000 2.0000"}));
+    EXPECT_EQ(g18,
+              (std::vector<std::string>{
+                  "0.0000 0.0000 0.0000 -> 0.0000 2.0000 0.0000", "0.0000 2.0000 0.0000 -> 0.0000 3.0000 0.0000",
+                  "0.0000 3.0000 0.0000 -> 1.0000 3.0000 2.0000", "1.0000 3.0000 2.0000 -> 0.5000 2.0000 1.0000",
+                  "0.5000 2.0000 1.0000 -> 3.0000 2.0000 1.0000", "3.0000 2.0000 1.0000 -> 0.0000 3.0000 2.0000"}));
     auto g19 = lines_of("G19 G99 M3 S100 F10\nG0 X2 Y0 Z0\nG84 Y1 Z2 X0.5 R3\nM2\n");
     ASSERT_EQ(g19.size(), 5u);
     EXPECT_EQ(g19[3], "3.0000 1.0000 2.0000 -> 2.0000 0.5000 1.0000");
@@ -136,9 +140,10 @@ TEST(NgcProbe, G38FeedsToThePointSetsParametersAndGoesOnShortOfIt) {
     // rs274: G38.2 X3 Y4 from 0,0 probes to (3, 4), #5061/#5062 = 3, 4, #5070 = 0, and the next
     // move's unnamed axes come from 0.254 mm short of the point: G0 Z1 ends at (2.8476, 3.7968, 1).
     auto got = lines_of("G0 X0 Y0 Z0\nG38.2 X3 Y4 F100\nG0 Z1\nG0 X[#5061 + #5070] Y#5062\nM2\n");
-    EXPECT_EQ(got, (std::vector<std::string>{
-                       "0.0000 0.0000 0.0000 -> 0.0000 0.0000 0.0000", "0.0000 0.0000 0.0000 -> 3.0000 4.0000 0.0000",
-                       "3.0000 4.0000 0.0000 -> 2.8476 3.7968 1.0000", "2.8476 3.7968 1.0000 -> 3.0000 4.0000 1.0000"}));
+    EXPECT_EQ(got,
+              (std::vector<std::string>{
+                  "0.0000 0.0000 0.0000 -> 0.0000 0.0000 0.0000", "0.0000 0.0000 0.0000 -> 3.0000 4.0000 0.0000",
+                  "3.0000 4.0000 0.0000 -> 2.8476 3.7968 1.0000", "2.8476 3.7968 1.0000 -> 3.0000 4.0000 1.0000"}));
     EXPECT_EQ(at(error_of("G0 Z0\nG38.2 Z-0.1 F100\nM2\n", linuxcnc_mill())),
               "2:1 start point too close to probe point (G38.x needs 0.254 mm at least)");
 }

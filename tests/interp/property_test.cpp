@@ -22,8 +22,8 @@ constexpr std::array<char, 3> offset_names = {'I', 'J', 'K'};
 
 std::string mm(long long um) {
     std::string digits = std::to_string(std::llabs(um) % 1000);
-    return (um < 0 ? "-" : "") + std::to_string(std::llabs(um) / 1000) + "." +
-           std::string(3 - digits.size(), '0') + digits;
+    return (um < 0 ? "-" : "") + std::to_string(std::llabs(um) / 1000) + "." + std::string(3 - digits.size(), '0') +
+           digits;
 }
 
 bool within_reach(const Microns& p) {
@@ -73,10 +73,10 @@ public:
 
 private:
     struct Block {
-        std::string code;     // "G0", "G2", ...
+        std::string code;  // "G0", "G2", ...
         Microns end{};
         std::array<bool, 3> named{};  // which axis words are written
-        std::string extra;    // " I.. J.." or " R.."
+        std::string extra;            // " I.. J.." or " R.."
     };
 
     int pick(int low, int high) { return std::uniform_int_distribution<int>(low, high)(random_); }

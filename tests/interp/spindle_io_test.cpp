@@ -14,9 +14,15 @@ namespace {
 std::string describe(const Io& io) {
     std::string out;
     switch (io.kind) {
-        case IoKind::mcode: out = "M" + std::to_string(io.number); break;
-        case IoKind::spindle_speed: out = "S"; break;
-        case IoKind::tool_select: out = "T" + std::to_string(io.number); break;
+        case IoKind::mcode:
+            out = "M" + std::to_string(io.number);
+            break;
+        case IoKind::spindle_speed:
+            out = "S";
+            break;
+        case IoKind::tool_select:
+            out = "T" + std::to_string(io.number);
+            break;
     }
     if (io.kind == IoKind::spindle_speed || (io.kind == IoKind::mcode && (io.number == 3 || io.number == 4))) {
         out += io.constant_surface_speed ? " css=" : " rpm=";
@@ -45,14 +51,21 @@ Texts events(std::string_view program, const MachineConfig& machine = default_mi
 // ---- spindle, tool, coolant, M codes ------------------------------------------------------------
 
 TEST(Spindle, SpeedAndDirection) {
-    EXPECT_EQ(events("S1000 M3\nM4\nM5\nS200\n"), (Texts{"S rpm=1000", "M3 rpm=1000", "M4 rpm=1000", "M5", "S rpm=200"}));
+    EXPECT_EQ(events("S1000 M3\nM4\nM5\nS200\n"),
+              (Texts{"S rpm=1000", "M3 rpm=1000", "M4 rpm=1000", "M5", "S rpm=200"}));
 }
 
-TEST(Spindle, SpeedUpToTheMachineMaximum) { EXPECT_EQ(events("S6000\n"), (Texts{"S rpm=6000"})); }
+TEST(Spindle, SpeedUpToTheMachineMaximum) {
+    EXPECT_EQ(events("S6000\n"), (Texts{"S rpm=6000"}));
+}
 
-TEST(Spindle, SpeedIsModalForLaterM3) { EXPECT_EQ(events("S750\nM3\n"), (Texts{"S rpm=750", "M3 rpm=750"})); }
+TEST(Spindle, SpeedIsModalForLaterM3) {
+    EXPECT_EQ(events("S750\nM3\n"), (Texts{"S rpm=750", "M3 rpm=750"}));
+}
 
-TEST(Spindle, M3WithoutSpeedCarriesZero) { EXPECT_EQ(events("M3\n"), (Texts{"M3 rpm=0"})); }
+TEST(Spindle, M3WithoutSpeedCarriesZero) {
+    EXPECT_EQ(events("M3\n"), (Texts{"M3 rpm=0"}));
+}
 
 TEST(Tool, SelectAndChange) {
     std::vector<Move> moves = moves_of("T2 M6\n");
@@ -89,7 +102,9 @@ TEST(MCodes, ExactStopCodesOfTheMachineWait) {
     EXPECT_EQ(events("M24 M101\nM64\nM65\n", m), (Texts{"M24 waits", "M101", "M64 waits", "M65"}));
 }
 
-TEST(MCodes, LeadingZerosAreTheSameCode) { EXPECT_EQ(events("M03 S100\nM08\n"), (Texts{"S rpm=100", "M3 rpm=100", "M8"})); }
+TEST(MCodes, LeadingZerosAreTheSameCode) {
+    EXPECT_EQ(events("M03 S100\nM08\n"), (Texts{"S rpm=100", "M3 rpm=100", "M8"}));
+}
 
 TEST(Order, SpeedToolSpindleCoolantBeforeMotionAndStopAfter) {
     EXPECT_EQ(events("G1 X10 F100 M8 S500 T2 M3 M30\n"),
@@ -113,14 +128,18 @@ TEST(Order, EveryMoveOfABlockHasItsLocation) {
 
 // ---- dwell --------------------------------------------------------------------------------
 
-TEST(Dwell, PIsMilliseconds) { EXPECT_DOUBLE_EQ(the<Dwell>("G4 P1500\n").seconds, 1.5); }
+TEST(Dwell, PIsMilliseconds) {
+    EXPECT_DOUBLE_EQ(the<Dwell>("G4 P1500\n").seconds, 1.5);
+}
 
 TEST(Dwell, XIsSeconds) {
     EXPECT_DOUBLE_EQ(the<Dwell>("G4 X2\n").seconds, 2.0);
     EXPECT_DOUBLE_EQ(the<Dwell>("G4 X0.25\n").seconds, 0.25);
 }
 
-TEST(Dwell, ZeroIsAllowed) { EXPECT_DOUBLE_EQ(the<Dwell>("G4 P0\n").seconds, 0.0); }
+TEST(Dwell, ZeroIsAllowed) {
+    EXPECT_DOUBLE_EQ(the<Dwell>("G4 P0\n").seconds, 0.0);
+}
 
 TEST(Dwell, DoesNotMoveOrChangeTheMotionMode) {
     EXPECT_EQ(events("G1 X1 F100\nG4 X1\nX2\n"),
@@ -179,7 +198,8 @@ TEST(SurfaceSpeed, ClampedByG50S) {
 
 TEST(SurfaceSpeed, ClampedByTheMachineMaximum) {
     // Radius 1 mm would need 31831 rpm; the lathe turns 4000.
-    EXPECT_DOUBLE_EQ(only<Line>(moves_of("G96 S200\nG0 X2\nG95 G1 Z-10 F0.1\n", lathe())).back().feed.mm_per_min, 400.0);
+    EXPECT_DOUBLE_EQ(only<Line>(moves_of("G96 S200\nG0 X2\nG95 G1 Z-10 F0.1\n", lathe())).back().feed.mm_per_min,
+                     400.0);
     EXPECT_DOUBLE_EQ(the<Line>("G96 S200\nG95 G1 Z-10 F0.1\n", lathe()).feed.mm_per_min, 400.0) << "at X0";
 }
 
@@ -202,9 +222,13 @@ TEST(SurfaceSpeed, G97ReturnsToRpm) {
     EXPECT_DOUBLE_EQ(std::get<Line>(moves.back().what).feed.mm_per_min, 200.0);
 }
 
-TEST(SurfaceSpeed, SpeedIsNotLimitedByMaxRpm) { EXPECT_EQ(events("G96 S5000\n", lathe()), (Texts{"S css=5000"})); }
+TEST(SurfaceSpeed, SpeedIsNotLimitedByMaxRpm) {
+    EXPECT_EQ(events("G96 S5000\n", lathe()), (Texts{"S css=5000"}));
+}
 
-TEST(SurfaceSpeed, G50SAloneIsNotAnEvent) { EXPECT_TRUE(moves_of("G50 S2000\n", lathe()).empty()); }
+TEST(SurfaceSpeed, G50SAloneIsNotAnEvent) {
+    EXPECT_TRUE(moves_of("G50 S2000\n", lathe()).empty());
+}
 
 TEST(SurfaceSpeed, ModeChangeWithoutSIsAnEvent) {
     // Later stages know the spindle only from events: G96 / G97 alone must still say so.
@@ -254,7 +278,9 @@ TEST(Thread, FLeadDoesNotChangeTheFeed) {
                      "G1 X2.0000 Y0.0000 Z-5.0000 F100.0000"}));
 }
 
-TEST(Thread, InchLead) { EXPECT_DOUBLE_EQ(the<SyncMove>("G20 G33 Z-1 K0.1\n").feed.mm_per_rev, 2.54); }
+TEST(Thread, InchLead) {
+    EXPECT_DOUBLE_EQ(the<SyncMove>("G20 G33 Z-1 K0.1\n").feed.mm_per_rev, 2.54);
+}
 
 TEST(Thread, TaperThreadMovesBothAxes) {
     SyncMove s = the<SyncMove>("G0 X20\nG33 X30 Z-20 K2\n", lathe());

@@ -141,8 +141,7 @@ TEST(AfterError, DwellBeforeABadMoveIsNotSent) {
 }
 
 TEST(AfterError, SourceErrorRepeats) {
-    Interpreter interpreter =
-        interpreter_for("(" + std::string(ProgramSource::max_line_bytes + 1, 'x') + ")\n");
+    Interpreter interpreter = interpreter_for("(" + std::string(ProgramSource::max_line_bytes + 1, 'x') + ")\n");
     for (int i = 0; i < 2; ++i) {
         InterpResult r = interpreter.next();
         ASSERT_TRUE(std::holds_alternative<Diagnostic>(r));

@@ -67,8 +67,7 @@ TEST(DecimalPoint, CalculatorReadsWholeNumbersAsMillimetres) {
 }
 
 TEST(DecimalPoint, LeastIncrementReadsWholeNumbersAsMicrons) {
-    EXPECT_EQ(texts("G0 X10 Y10. Z-1500\n", least_increment_mill()),
-              (Texts{"G0 X0.0100 Y10.0000 Z-1.5000 A0.0000"}));
+    EXPECT_EQ(texts("G0 X10 Y10. Z-1500\n", least_increment_mill()), (Texts{"G0 X0.0100 Y10.0000 Z-1.5000 A0.0000"}));
 }
 
 TEST(DecimalPoint, LeastIncrementInInchIsATenThousandth) {

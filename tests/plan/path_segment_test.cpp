@@ -80,7 +80,8 @@ TEST(PathSegment, ArcsInEveryPlaneAndDirection) {
             arc.to[s] = 10;  // quarter (ccw) or three quarters (cw)
             arc.to[Axis::A] = 50;
             const PathSegment g = make_arc(arc);
-            const double sweep = dir == ArcDirection::counterclockwise ? 0.5 * std::numbers::pi : 1.5 * std::numbers::pi;
+            const double sweep =
+                dir == ArcDirection::counterclockwise ? 0.5 * std::numbers::pi : 1.5 * std::numbers::pi;
             EXPECT_NEAR(g.sweep_rad(), sweep, 1e-12);
             EXPECT_NEAR(g.length, 10 * sweep, 1e-9);
             for (std::size_t i = 0; i < axis_count; ++i) {
@@ -173,8 +174,8 @@ TEST(PathSegment, ArcBoundsCoverTheSweepAndAreTight) {
         const double r = std::pow(10.0, -2 + 3 * unit(random));
         const double a0 = 2 * std::numbers::pi * unit(random);
         // Sweeps from a thousandth of a degree to nearly a turn (and sometimes a turn and more).
-        const double sweep = n % 7 == 0 ? 2 * std::numbers::pi * (1 + unit(random))
-                                        : std::pow(10.0, -5 + 5.8 * unit(random));
+        const double sweep =
+            n % 7 == 0 ? 2 * std::numbers::pi * (1 + unit(random)) : std::pow(10.0, -5 + 5.8 * unit(random));
         const double a1 = a0 + (arc.direction == ArcDirection::counterclockwise ? sweep : -sweep);
         const std::size_t f = arc.plane == Plane::xy ? 0 : arc.plane == Plane::zx ? 2 : 1;
         const std::size_t s = arc.plane == Plane::xy ? 1 : arc.plane == Plane::zx ? 0 : 2;
@@ -279,8 +280,8 @@ TEST(SegmentLimits, BudgetHoldsAndBeatsFixedShares) {
                     if (kind == ProfileKind::scurve) {
                         const double j = l.max_jerk;
                         ASSERT_GT(j, 0);
-                        EXPECT_LE(b.d3[i] * v * v * v + 3 * b.d2[i] * v * a + b.d1[i] * j,
-                                  axis.max_jerk * (1 + 1e-12)) << n;
+                        EXPECT_LE(b.d3[i] * v * v * v + 3 * b.d2[i] * v * a + b.d1[i] * j, axis.max_jerk * (1 + 1e-12))
+                            << n;
                     }
                 }
                 if (share != 0.5) continue;

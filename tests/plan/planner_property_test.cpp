@@ -104,7 +104,8 @@ TEST(PlannerProperty, RandomProgramsKeepEveryLimit) {
         auto feed_of = [&](const TrajectoryPiece& p) {
             return b.feeds_mm_s[static_cast<std::size_t>(p.sequence_number)] * o.feed_override;
         };
-        const plan_test::CheckStats stats = plan_test::check_trajectory(r.trajectory.pieces, m, kind, b.position, feed_of, 16);
+        const plan_test::CheckStats stats =
+            plan_test::check_trajectory(r.trajectory.pieces, m, kind, b.position, feed_of, 16);
         ASSERT_FALSE(::testing::Test::HasFailure()) << "program " << program;
         worst = std::max(worst, stats.worst_limit_ratio);
         samples += stats.samples;
@@ -114,7 +115,10 @@ TEST(PlannerProperty, RandomProgramsKeepEveryLimit) {
             const Move& move = b.moves[seq];
             const PathControl control = std::visit(
                 [](const auto& what) -> PathControl {
-                    if constexpr (requires { what.path; }) return what.path; else return {};
+                    if constexpr (requires { what.path; })
+                        return what.path;
+                    else
+                        return {};
                 },
                 move.what);
             const double tol = control.tolerance_mm > 0 ? control.tolerance_mm : o.default_blend_tolerance_mm;
@@ -127,8 +131,9 @@ TEST(PlannerProperty, RandomProgramsKeepEveryLimit) {
                 ++after;
             }
             ASSERT_LE(plan_test::deviation_from(p, move, b.moves[after]), tol * (1 + 1e-9) + 1e-9)
-                << "program " << program << " kind " << static_cast<int>(kind) << " shape " << static_cast<int>(p.segment.shape)
-                << " len " << p.segment.length << " seq " << seq << " of " << b.moves.size() << " next is line " << std::holds_alternative<Line>(b.moves[seq + 1].what);
+                << "program " << program << " kind " << static_cast<int>(kind) << " shape "
+                << static_cast<int>(p.segment.shape) << " len " << p.segment.length << " seq " << seq << " of "
+                << b.moves.size() << " next is line " << std::holds_alternative<Line>(b.moves[seq + 1].what);
         }
     }
     EXPECT_GT(worst, 0.99);  // the limits are used, not just respected
@@ -150,7 +155,8 @@ TEST(PlannerProperty, ShortSegmentChainsReachTheFeed) {
         }
         const PlanResult res = plan_moves(b.moves, m);
         double top = 0;
-        for (const TrajectoryPiece& p : res.trajectory.pieces) top = std::max(top, sample(p, p.start_time_s).path_velocity);
+        for (const TrajectoryPiece& p : res.trajectory.pieces)
+            top = std::max(top, sample(p, p.start_time_s).path_velocity);
         // Transitions run at the feed up to their parametric speed's bound (|dp/ds| sampled and
         // padded): within 1e-4 of it.
         EXPECT_NEAR(top, 20, 20 * 1e-4) << step;
@@ -198,7 +204,8 @@ TEST(PlannerProperty, CamRasterKeepsLimitsAndSpeed) {
             auto feed_of = [&](const TrajectoryPiece& p) {
                 return b.feeds_mm_s[static_cast<std::size_t>(p.sequence_number)];
             };
-            const plan_test::CheckStats stats = plan_test::check_trajectory(r.trajectory.pieces, m, kind, b.position, feed_of, 8);
+            const plan_test::CheckStats stats =
+                plan_test::check_trajectory(r.trajectory.pieces, m, kind, b.position, feed_of, 8);
             ASSERT_FALSE(::testing::Test::HasFailure()) << static_cast<int>(kind) << " window " << window;
             for (const TrajectoryPiece& p : r.trajectory.pieces) {
                 if (!p.blend) continue;

@@ -118,13 +118,13 @@ TEST(Planner, TangentLineArcPassesAtSpeedAndCornerStops) {
     for (ProfileKind kind : {ProfileKind::trapezoid, ProfileKind::scurve}) {
         MachineConfig m = plan_test::test_machine(kind);
         MoveBuilder b;
-        b.line(xyz(10, 0), 1200);                                                   // 0
-        b.arc(xyz(20, 10), xyz(10, 10), ArcDirection::counterclockwise, 1200);      // 1 tangent
-        b.line(xyz(20, 20), 1200);                                                  // 2 tangent
-        b.arc(xyz(30, 20), xyz(25, 20), ArcDirection::counterclockwise, 1200);      // 3 reversal
-        b.line(xyz(40, 20), 1200, {true, 0});                                       // 4 G9
-        b.line(xyz(50, 20), 1200);                                                  // 5 reversal next
-        b.line(xyz(45, 20), 1200);                                                  // 6
+        b.line(xyz(10, 0), 1200);                                               // 0
+        b.arc(xyz(20, 10), xyz(10, 10), ArcDirection::counterclockwise, 1200);  // 1 tangent
+        b.line(xyz(20, 20), 1200);                                              // 2 tangent
+        b.arc(xyz(30, 20), xyz(25, 20), ArcDirection::counterclockwise, 1200);  // 3 reversal
+        b.line(xyz(40, 20), 1200, {true, 0});                                   // 4 G9
+        b.line(xyz(50, 20), 1200);                                              // 5 reversal next
+        b.line(xyz(45, 20), 1200);                                              // 6
         const Planned p = plan_and_check(b, m);
         if (kind == ProfileKind::trapezoid) {
             // The acceleration may step: tangent joins pass at the feed.
@@ -177,7 +177,11 @@ TEST(Planner, WaitingMcodesStopOthersPassAtSpeed) {
     for (const TrajectoryPiece& piece : p.pieces) {
         if (piece.kind == PieceKind::io) {
             ++events;
-            EXPECT_NEAR(start_point(piece.segment)[0], piece.io.number == 3 ? 20 : piece.io.number == 7 ? 10 : 30, 1e-12);
+            EXPECT_NEAR(start_point(piece.segment)[0],
+                        piece.io.number == 3   ? 20
+                        : piece.io.number == 7 ? 10
+                                               : 30,
+                        1e-12);
         }
         if (piece.kind == PieceKind::dwell) {
             EXPECT_DOUBLE_EQ(piece.duration_s, 0.5);

@@ -66,7 +66,8 @@ inline std::string check_profile(const Profile& profile, const ProfileLimits& li
     if (n < 0 || n > (kind == ProfileKind::trapezoid ? 3 : 7)) return fmt::format("phase_count {}", n);
     for (int k = 0; k < n; ++k) {
         const ProfilePhase& ph = profile.phases[static_cast<std::size_t>(k)];
-        if (!(ph.duration_s > 0) || !std::isfinite(ph.duration_s)) return fmt::format("phase {} duration {}", k, ph.duration_s);
+        if (!(ph.duration_s > 0) || !std::isfinite(ph.duration_s))
+            return fmt::format("phase {} duration {}", k, ph.duration_s);
         if (std::abs(ph.jerk) > jmax * (1 + 1e-12)) return fmt::format("phase {} jerk {}", k, ph.jerk);
     }
     const PhaseStates s = integrate_phases(profile);
@@ -112,8 +113,8 @@ inline std::string check_profile(const Profile& profile, const ProfileLimits& li
             const ProfileState st = profile.at(t);
             const double a = ph.acceleration + ph.jerk * tau;
             const double v = s.velocity[k] + ph.acceleration * tau + ph.jerk * tau * tau / 2;
-            const double p = s.position[k] + s.velocity[k] * tau + ph.acceleration * tau * tau / 2 +
-                             ph.jerk * tau * tau * tau / 6;
+            const double p =
+                s.position[k] + s.velocity[k] * tau + ph.acceleration * tau * tau / 2 + ph.jerk * tau * tau * tau / 6;
             if (!(st.velocity >= 0)) return fmt::format("negative velocity {} at t={}", st.velocity, t);
             if (st.velocity > vmax * (1 + 1e-6)) return fmt::format("velocity {} > {} at t={}", st.velocity, vmax, t);
             if (std::abs(st.acceleration) > amax * (1 + 1e-6)) {
@@ -123,7 +124,8 @@ inline std::string check_profile(const Profile& profile, const ProfileLimits& li
             if (std::abs(st.position - profile.start_position - p) > pos_tol) {
                 return fmt::format("at({}) position {} vs phases {}", t, st.position, p);
             }
-            if (std::abs(st.velocity - v) > vel_tol) return fmt::format("at({}) velocity {} vs phases {}", t, st.velocity, v);
+            if (std::abs(st.velocity - v) > vel_tol)
+                return fmt::format("at({}) velocity {} vs phases {}", t, st.velocity, v);
             // A trapezoid's acceleration jumps at phase boundaries, where at() gives the value
             // of the phase starting there: within a rounding of the time, either.
             const bool jump = kind == ProfileKind::trapezoid && (i == 0 || i == 16);

@@ -32,10 +32,10 @@ public:
     Request next() {
         Request r;
         r.kind = uniform(0, 1) < 0.7 ? ProfileKind::scurve : ProfileKind::trapezoid;
-        r.limits.max_velocity = decade(0, 3.5);      // 1 .. 3000 mm/s
-        r.limits.max_acceleration = decade(1, 5);    // 10 .. 1e5 mm/s^2
-        r.limits.max_jerk = decade(2, 8);            // 100 .. 1e8 mm/s^3
-        r.distance = decade(-4, 3);                  // 1e-4 .. 1000 mm
+        r.limits.max_velocity = decade(0, 3.5);    // 1 .. 3000 mm/s
+        r.limits.max_acceleration = decade(1, 5);  // 10 .. 1e5 mm/s^2
+        r.limits.max_jerk = decade(2, 8);          // 100 .. 1e8 mm/s^3
+        r.distance = decade(-4, 3);                // 1e-4 .. 1000 mm
         r.v_start = speed(r.limits.max_velocity);
         const double choice = uniform(0, 1);
         if (choice < 0.5) {
@@ -122,7 +122,8 @@ TEST(ProfileProperty, HundredThousandRandomRequests) {
         } else if (q.distance < need * (1 - 1e-12)) {
             ++infeasible;
             if (v1 == q.v_end) fail("infeasible request planned as asked");
-            if (v1 > q.v_end && v1 != min_end_speed(q.distance, v0, q.limits, q.kind)) fail("clamped above the request");
+            if (v1 > q.v_end && v1 != min_end_speed(q.distance, v0, q.limits, q.kind))
+                fail("clamped above the request");
             if (v1 < q.v_end && v0 > q.v_end) ++hump_clamps;
         }
         if (ref_change_distance(std::min(v0, v1), std::max(v0, v1), a, j) > q.distance * (1 + 1e-9)) {

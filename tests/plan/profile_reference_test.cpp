@@ -31,8 +31,8 @@ TEST(ProfileReference, WorkedRestToRestDurations) {
     // The table prints 9 decimals, so it is matched to half its last digit; the closed forms it
     // was computed from are matched to 1e-12 relative.
     const RestToRest cases[] = {
-        {100, 50, 1000, 1e5, 2.060000000},  {1, 50, 1000, 1e5, 0.074031242},     {0.05, 50, 1000, 1e5, 0.025198421},
-        {10, 200, 500, 1000, 0.683990379},  {100, 20, 5000, 1e4, 5.089442719},
+        {100, 50, 1000, 1e5, 2.060000000}, {1, 50, 1000, 1e5, 0.074031242},   {0.05, 50, 1000, 1e5, 0.025198421},
+        {10, 200, 500, 1000, 0.683990379}, {100, 20, 5000, 1e4, 5.089442719},
     };
     for (const RestToRest& c : cases) {
         SCOPED_TRACE(testing::Message() << "d=" << c.d << " v=" << c.v << " a=" << c.a << " j=" << c.j);

@@ -28,8 +28,9 @@ double integrate_angle_deg(const SpindleConfig& c, double rpm, double t_s) {
     const int steps = 100000;
     const double h = t_s / steps;
     auto rate = [&](double theta) {
-        return 6.0 * rpm * (1.0 + c.ripple_fraction * std::sin((c.ripple_per_turn * theta + c.ripple_phase_deg) *
-                                                                  std::numbers::pi / 180.0));
+        return 6.0 * rpm *
+               (1.0 + c.ripple_fraction *
+                          std::sin((c.ripple_per_turn * theta + c.ripple_phase_deg) * std::numbers::pi / 180.0));
     };
     double theta = 0;
     for (int i = 0; i < steps; ++i) {

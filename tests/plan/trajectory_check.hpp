@@ -58,7 +58,8 @@ inline double deviation_from(const TrajectoryPiece& piece, const Move& before, c
                 }
                 t = dd > 0 ? std::clamp(t / dd, 0.0, 1.0) : 0.0;
                 double d2 = 0;
-                for (std::size_t i = 0; i < 3; ++i) d2 += (p[i] - a[i] - t * (b[i] - a[i])) * (p[i] - a[i] - t * (b[i] - a[i]));
+                for (std::size_t i = 0; i < 3; ++i)
+                    d2 += (p[i] - a[i] - t * (b[i] - a[i])) * (p[i] - a[i] - t * (b[i] - a[i]));
                 best = std::min(best, std::sqrt(d2));
                 a = b;
             }
@@ -75,9 +76,8 @@ struct CheckStats {
 };
 
 //! feed_of(piece) gives the XYZ speed limit of a motion piece (mm/s, +inf for none).
-inline CheckStats check_trajectory(const std::vector<TrajectoryPiece>& pieces, const MachineConfig& m,
-                                   ProfileKind kind, const AxisVector& end,
-                                   const std::function<double(const TrajectoryPiece&)>& feed_of,
+inline CheckStats check_trajectory(const std::vector<TrajectoryPiece>& pieces, const MachineConfig& m, ProfileKind kind,
+                                   const AxisVector& end, const std::function<double(const TrajectoryPiece&)>& feed_of,
                                    int samples_per_piece = 24) {
     CheckStats stats;
     constexpr double rel = 1e-6;
@@ -113,14 +113,17 @@ inline CheckStats check_trajectory(const std::vector<TrajectoryPiece>& pieces, c
                 EXPECT_NEAR(first.position[i], previous_end.position[i], 1e-9) << "position jump at t=" << first.t;
                 // Junctions count as tangent up to 1e-6 in dq/ds (junction.hpp): a jump of 1e-6·ṡ.
                 const double scale = 1.01e-6 * std::max(1.0, first.path_velocity);
-                EXPECT_NEAR(first.velocity[i], previous_end.velocity[i], scale) << "velocity jump at t=" << first.t << " ṡ " << previous_end.path_velocity << " -> "
+                EXPECT_NEAR(first.velocity[i], previous_end.velocity[i], scale)
+                    << "velocity jump at t=" << first.t << " ṡ " << previous_end.path_velocity << " -> "
                     << first.path_velocity << " kinds " << int(previous->kind) << int(p.kind) << " offsets "
                     << p.profile_offset_s << " " << p.profile_offset_mm << " prev ends " << previous->ends_profile
-                    << " blend " << previous->blend << p.blend << " len " << p.segment.length << " r " << p.segment.radius_mm
-                    << " prev r " << previous->segment.radius_mm << " prev len " << previous->segment.length;
+                    << " blend " << previous->blend << p.blend << " len " << p.segment.length << " r "
+                    << p.segment.radius_mm << " prev r " << previous->segment.radius_mm << " prev len "
+                    << previous->segment.length;
             }
             if (kind == ProfileKind::scurve && p.kind == PieceKind::motion && previous->kind == PieceKind::motion) {
-                EXPECT_NEAR(first.path_acceleration, previous_end.path_acceleration, 1e-6) << "tangential acceleration jump at t=" << first.t;
+                EXPECT_NEAR(first.path_acceleration, previous_end.path_acceleration, 1e-6)
+                    << "tangential acceleration jump at t=" << first.t;
             }
         }
         if (p.kind == PieceKind::dwell || (p.kind == PieceKind::io && p.io.waits)) {

@@ -11,10 +11,10 @@
 
 #include <gtest/gtest.h>
 
-#include "nckit/cam/piston_job.hpp"
+#include "nckit/process/piston/piston_job.hpp"
 #include "nckit/drive/servo_model.hpp"
-#include "nckit/process/cam_follower.hpp"
-#include "nckit/process/piston.hpp"
+#include "nckit/process/fts/cam_follower.hpp"
+#include "nckit/process/piston/piston.hpp"
 
 namespace {
 std::atomic<long> allocations{0};
@@ -26,8 +26,12 @@ void* operator new(std::size_t size) {
     if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
     throw std::bad_alloc();
 }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete(void* p) noexcept {
+    std::free(p);
+}
+void operator delete(void* p, std::size_t) noexcept {
+    std::free(p);
+}
 
 namespace nckit {
 namespace {

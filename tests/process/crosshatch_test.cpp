@@ -4,8 +4,8 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include "nckit/process/crosshatch.hpp"
-#include "nckit/process/crosshatch_scan.hpp"
+#include "nckit/process/crosshatch/crosshatch.hpp"
+#include "nckit/process/crosshatch/crosshatch_scan.hpp"
 
 namespace nckit {
 namespace {
@@ -54,8 +54,8 @@ struct Worked {
 };
 
 TEST(Crosshatch, PapersThreeExamplesMatchTheWorkedTable) {
-    for (const Worked& w : {Worked{12, 30, 2.5, 45.0952, 33333, 180, -150}, Worked{8, 45, 3.75, 30.9432, 22222, 270, 135},
-                            Worked{6, 60, 5.0, 23.4553, 16667, 0, 60}}) {
+    for (const Worked& w : {Worked{12, 30, 2.5, 45.0952, 33333, 180, -150},
+                            Worked{8, 45, 3.75, 30.9432, 22222, 270, 135}, Worked{6, 60, 5.0, 23.4553, 16667, 0, 60}}) {
         SCOPED_TRACE(w.heads);
         const CrosshatchPlan plan = plan_of(job_text(w.heads, 15, w.index_deg));
         EXPECT_NEAR(plan.rotation_rpm, w.rotation_rpm, 1e-12);
@@ -81,9 +81,9 @@ TEST(Crosshatch, RoundTripThatEqualsTheIndexIsSpecial) {
 }
 
 TEST(Crosshatch, CorrectionTakesTheShorterWayAndHalfATurnGoesForward) {
-    EXPECT_DOUBLE_EQ(plan_of(job_text(12, 15, 0)).index_move_deg, 180.0);   // α = 180: forward
-    EXPECT_DOUBLE_EQ(plan_of(job_text(12, 15, 1)).index_move_deg, -179.0);  // α = 179: back
-    EXPECT_DOUBLE_EQ(plan_of(job_text(12, 15, 359)).index_move_deg, 179.0); // α = 181: forward
+    EXPECT_DOUBLE_EQ(plan_of(job_text(12, 15, 0)).index_move_deg, 180.0);    // α = 180: forward
+    EXPECT_DOUBLE_EQ(plan_of(job_text(12, 15, 1)).index_move_deg, -179.0);   // α = 179: back
+    EXPECT_DOUBLE_EQ(plan_of(job_text(12, 15, 359)).index_move_deg, 179.0);  // α = 181: forward
 }
 
 TEST(Crosshatch, StepStreamMatchesTheScanAndCloses) {
@@ -186,7 +186,8 @@ TEST(Crosshatch, SvgDrawsEveryTrackWrappedAtTheTurn) {
     const CrosshatchPlan plan = plan_of(job_text(12, 15, 30));
     const std::string svg = crosshatch_svg(plan, build_crosshatch_scan(plan));
     std::size_t lines = 0;
-    for (std::size_t at = svg.find("stroke=\"#1f5fa8\""); at != std::string::npos; at = svg.find("stroke=\"#1f5fa8\"", at + 1)) {
+    for (std::size_t at = svg.find("stroke=\"#1f5fa8\""); at != std::string::npos;
+         at = svg.find("stroke=\"#1f5fa8\"", at + 1)) {
         ++lines;
     }
     // 12 down strokes of 1.25 turns: each crosses one or two multiples of 360°, so 2 or 3 pieces.
@@ -201,7 +202,8 @@ TEST(CrosshatchJob, ErrorsPointAtTheKey) {
         for (const Diagnostic& d : errors_of(text)) all += format_diagnostic(d) + "\n";
         return all.empty() ? std::string("no error") : all;
     };
-    EXPECT_NE(first("[crosshatch]\nbore_diameter_mm = -92.0\n").find("job.toml:2:20: error: 'bore_diameter_mm' must be positive"),
+    EXPECT_NE(first("[crosshatch]\nbore_diameter_mm = -92.0\n")
+                  .find("job.toml:2:20: error: 'bore_diameter_mm' must be positive"),
               std::string::npos);
     EXPECT_NE(first(job_text(12, 15, 30, "colour = 3")).find("job.toml:12:1: error: unknown key 'colour'"),
               std::string::npos);
@@ -211,7 +213,9 @@ TEST(CrosshatchJob, ErrorsPointAtTheKey) {
     EXPECT_NE(first("[crosshat]\n").find("job.toml:1:2: error: unknown table [crosshat]"), std::string::npos);
     EXPECT_NE(first("[crosshatch\n").find("job.toml:1:12: error: toml syntax error"), std::string::npos);
     // 1 line per length over 150 mm with 12 heads: 0.1 rpm of the head is 1.2 steps/s, below 15.26.
-    EXPECT_NE(first(job_text(12, 0.5, 30)).find("job.toml:7:18: error: the rotation motor needs 1 steps/s, slower than the counter makes (15.259 to 500000"),
+    EXPECT_NE(first(job_text(12, 0.5, 30))
+                  .find("job.toml:7:18: error: the rotation motor needs 1 steps/s, slower than the counter makes "
+                        "(15.259 to 500000"),
               std::string::npos)
         << first(job_text(12, 0.5, 30));
     EXPECT_NE(first(job_text(12, 15, 30, "laser_off_mcode = 27")).find("both M27"), std::string::npos);

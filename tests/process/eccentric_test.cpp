@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "nckit/drive/servo_model.hpp"
-#include "nckit/process/eccentric.hpp"
+#include "nckit/process/eccentric/eccentric.hpp"
 
 namespace nckit {
 namespace {

@@ -9,8 +9,8 @@
 #include <gtest/gtest.h>
 
 #include "nckit/drive/servo_model.hpp"
-#include "nckit/process/fts_controller.hpp"
-#include "nckit/process/fts_spindle.hpp"
+#include "nckit/process/fts/fts_controller.hpp"
+#include "nckit/process/fts/fts_spindle.hpp"
 
 namespace nckit {
 namespace {
@@ -133,10 +133,12 @@ TEST(FtsLearning, LowPassIsExactAtEveryHarmonicOfTheTurn) {
         EXPECT_NEAR(sum, 1.0, 1e-12);
         for (int m = 0; m <= counts / 2; ++m) {
             double response = 0.0;
-            for (int i = -half; i <= half; ++i) response += q[static_cast<std::size_t>(i + half)] * std::cos(2 * pi * m * i / counts);
+            for (int i = -half; i <= half; ++i)
+                response += q[static_cast<std::size_t>(i + half)] * std::cos(2 * pi * m * i / counts);
             EXPECT_NEAR(response, m <= 12 ? 1.0 : 0.0, 1e-12) << counts << " m " << m;
         }
-        for (int i = 1; i <= half; ++i) EXPECT_EQ(q[static_cast<std::size_t>(half + i)], q[static_cast<std::size_t>(half - i)]);
+        for (int i = 1; i <= half; ++i)
+            EXPECT_EQ(q[static_cast<std::size_t>(half + i)], q[static_cast<std::size_t>(half - i)]);
     }
 }
 
@@ -192,7 +194,7 @@ TEST(FtsLearning, ConvergesTurnByTurnOnARepeatingDemand) {
         for (int turn = 3; turn < 25; ++turn) {
             EXPECT_LT(turn_peak[turn], turn_peak[turn - 1] * std::min(0.95, factor + 0.15)) << e << " turn " << turn;
         }
-        EXPECT_GT(turn_peak[1], 1e-3) << e;   // 1 µm and more before learning
+        EXPECT_GT(turn_peak[1], 1e-3) << e;    // 1 µm and more before learning
         EXPECT_LT(turn_peak[39], 1e-10) << e;  // 0.1 pm after
     }
 }

@@ -13,7 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "nckit/drive/variable_period_servo.hpp"
-#include "nckit/process/fast_tool_servo.hpp"
+#include "nckit/process/fts/fast_tool_servo.hpp"
 
 namespace nckit {
 namespace {
@@ -53,7 +53,8 @@ void PrintTo(const Case& c, std::ostream* out) {
 class FtsJob : public testing::TestWithParam<Case> {};
 
 TEST_P(FtsJob, LearningBeatsFeedforwardBeatsNothing) {
-    const Result<FtsSimulation> done = simulate_fast_tool_servo(short_job(GetParam().model_error, GetParam().ripple), piston());
+    const Result<FtsSimulation> done =
+        simulate_fast_tool_servo(short_job(GetParam().model_error, GetParam().ripple), piston());
     ASSERT_TRUE(done.ok()) << format_diagnostic(done.diagnostics().front());
     const FtsSimulation& s = *done;
     EXPECT_EQ(s.cut_ticks, 20 * 360 + 1);
@@ -79,7 +80,8 @@ TEST_P(FtsJob, LearningBeatsFeedforwardBeatsNothing) {
 
 // Error per turn falls turn by turn through the air turns until it meets the DAC's floor.
 TEST_P(FtsJob, LearningConvergesTurnByTurn) {
-    const Result<FtsSimulation> done = simulate_fast_tool_servo(short_job(GetParam().model_error, GetParam().ripple), piston());
+    const Result<FtsSimulation> done =
+        simulate_fast_tool_servo(short_job(GetParam().model_error, GetParam().ripple), piston());
     ASSERT_TRUE(done.ok());
     const std::vector<double>& pv = done->learning.turn_pv_um;
     for (std::size_t k = 2; k < 8; ++k) EXPECT_LT(pv[k], 0.75 * pv[k - 1]) << "turn " << k;
@@ -191,7 +193,7 @@ TEST(FtsSimulation, DacQuantisationIsVisible) {
         odd_codes += static_cast<std::int64_t>(codes) % 2 != 0;
     }
     EXPECT_GT(odd_codes, fine->trace.size() / 4);  // the last bit is in use
-    p.servo.dac_bits = 11;  // 0.49 µm steps
+    p.servo.dac_bits = 11;                         // 0.49 µm steps
     const Result<FtsSimulation> coarse = simulate_fast_tool_servo(p, piston());
     ASSERT_TRUE(coarse.ok());
     // Converged air turns: the coarse DAC's floor is near its step, the fine one's far below.
@@ -223,7 +225,8 @@ TEST(FtsSimulation, StrokeTooShortIsAnError) {
     const Result<FtsSimulation> done = simulate_fast_tool_servo(p, piston());
     ASSERT_FALSE(done.ok());
     EXPECT_EQ(done.diagnostics().front().code, "fts-stroke");
-    EXPECT_EQ(format_diagnostic(done.diagnostics().front()).rfind("piston.toml:12:1: error: the uncompensated run", 0), 0u)
+    EXPECT_EQ(format_diagnostic(done.diagnostics().front()).rfind("piston.toml:12:1: error: the uncompensated run", 0),
+              0u)
         << format_diagnostic(done.diagnostics().front());
 }
 

@@ -8,13 +8,14 @@
 #include "nckit/gcode/program_source.hpp"
 #include "nckit/interp/interpreter.hpp"
 #include "nckit/plan/profile.hpp"
-#include "nckit/process/notch.hpp"
+#include "nckit/process/notch/notch.hpp"
 
 namespace nckit {
 namespace {
 
 MachineConfig notcher() {
-    Result<MachineConfig> machine = load_machine_config(std::string(NCKIT_SOURCE_DIR) + "/examples/machines/notcher.toml");
+    Result<MachineConfig> machine =
+        load_machine_config(std::string(NCKIT_SOURCE_DIR) + "/examples/machines/notcher.toml");
     EXPECT_TRUE(machine.ok());
     return *machine;
 }
@@ -70,7 +71,8 @@ TEST(Notch, LimitsAlongAnObliqueCutAreTheAxisLimitsOverTheDirection) {
         rewrite_notches(program("G1 X10 Z-10 F3000\nM27\nG1 X16 Z-18 F950\nG1 X30\nM30\n", machine), machine);
     ASSERT_TRUE(rewrite.ok()) << format_diagnostic(rewrite.diagnostics().front());
     ProfileLimits along{950.0 / 60.0, 500.0 / 0.8, 5000.0 / 0.8};
-    EXPECT_NEAR(rewrite->cuts.front().run_up_mm, speed_change_distance(0, 950.0 / 60.0, along, ProfileKind::scurve), 1e-12);
+    EXPECT_NEAR(rewrite->cuts.front().run_up_mm, speed_change_distance(0, 950.0 / 60.0, along, ProfileKind::scurve),
+                1e-12);
     EXPECT_FALSE(rewrite->cuts.front().approach_shortened);
 }
 
@@ -109,8 +111,9 @@ TEST(NotchRefuses, RunUpLeavingTheTravel) {
     const Diagnostic& d = rewrite.diagnostics().front();
     EXPECT_EQ(d.code, "notch-travel");
     EXPECT_EQ(d.location.line, 3U);
-    EXPECT_EQ(format_diagnostic(d),
-              "t.nc:3:1: error: the run-up of 0.8910 mm for this notch takes Z to 100.3910, outside its travel (-100..100)");
+    EXPECT_EQ(
+        format_diagnostic(d),
+        "t.nc:3:1: error: the run-up of 0.8910 mm for this notch takes Z to 100.3910, outside its travel (-100..100)");
 }
 
 TEST(NotchRefuses, OverrunLeavingTheTravel) {
@@ -130,14 +133,16 @@ TEST(NotchRefuses, RunUpCrossingThePreviousMove) {
     ASSERT_FALSE(rewrite.ok());
     const Diagnostic& d = rewrite.diagnostics().front();
     EXPECT_EQ(d.code, "notch-crossing");
-    EXPECT_EQ(format_diagnostic(d), "t.nc:5:1: error: the run-up of 0.8910 mm for this notch crosses the path of line 2");
+    EXPECT_EQ(format_diagnostic(d),
+              "t.nc:5:1: error: the run-up of 0.8910 mm for this notch crosses the path of line 2");
 }
 
 TEST(NotchRefuses, OverrunCrossingAnotherNotch) {
     const MachineConfig machine = notcher();
     // Two notches on one line, 0.5 mm apart: the first one's overrun runs into the second.
     Result<NotchRewrite> rewrite = rewrite_notches(
-        program("G1 X10 Z-10 F3000\nM27\nG1 Z-20 F950\nG0 X20\nG0 X10 Z-20.5\nM27\nG1 Z-30 F950\nG0 X20\nM30\n", machine),
+        program("G1 X10 Z-10 F3000\nM27\nG1 Z-20 F950\nG0 X20\nG0 X10 Z-20.5\nM27\nG1 Z-30 F950\nG0 X20\nM30\n",
+                machine),
         machine);
     ASSERT_FALSE(rewrite.ok());
     EXPECT_EQ(rewrite.diagnostics().front().code, "notch-crossing");

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "nckit/process/piston_json.hpp"
+#include "nckit/process/piston/piston_json.hpp"
 
 namespace nckit {
 namespace {
@@ -63,16 +63,17 @@ std::vector<std::string> keys_of(const nlohmann::ordered_json& object) {
 
 TEST(PistonJson, EveryKeyOfTheContractInItsOrder) {
     const nlohmann::ordered_json j = to_json(distinct_values());
-    EXPECT_EQ(keys_of(j), (std::vector<std::string>{"profile_error_um", "rpm", "encoder_counts", "tick_rate_hz",
-                                                     "dac_step_mm", "model_error", "spindle_ripple", "servo",
-                                                     "cam_table", "learning", "servo_demand", "z_mm", "feed_mm_rev",
-                                                     "ticks", "cut_ticks", "duration_s"}));
-    EXPECT_EQ(keys_of(j["servo"]), (std::vector<std::string>{"natural_frequency_hz", "damping", "stroke_mm", "dac_bits"}));
-    EXPECT_EQ(keys_of(j["cam_table"]), (std::vector<std::string>{"theta_cells", "z_cells", "cells", "bytes",
-                                                                 "error_bound_mm", "tolerance_mm"}));
-    EXPECT_EQ(keys_of(j["learning"]), (std::vector<std::string>{"settled_turn", "settle_limit_um", "air_turns",
-                                                                "harmonics", "gain", "contraction",
-                                                                "contraction_learned"}));
+    EXPECT_EQ(keys_of(j),
+              (std::vector<std::string>{"profile_error_um", "rpm", "encoder_counts", "tick_rate_hz", "dac_step_mm",
+                                        "model_error", "spindle_ripple", "servo", "cam_table", "learning",
+                                        "servo_demand", "z_mm", "feed_mm_rev", "ticks", "cut_ticks", "duration_s"}));
+    EXPECT_EQ(keys_of(j["servo"]),
+              (std::vector<std::string>{"natural_frequency_hz", "damping", "stroke_mm", "dac_bits"}));
+    EXPECT_EQ(keys_of(j["cam_table"]),
+              (std::vector<std::string>{"theta_cells", "z_cells", "cells", "bytes", "error_bound_mm", "tolerance_mm"}));
+    EXPECT_EQ(keys_of(j["learning"]),
+              (std::vector<std::string>{"settled_turn", "settle_limit_um", "air_turns", "harmonics", "gain",
+                                        "contraction", "contraction_learned"}));
     EXPECT_EQ(keys_of(j["servo_demand"]),
               (std::vector<std::string>{"peak_displacement_mm", "displacement_limit_mm", "peak_displacement_theta_deg",
                                         "peak_displacement_z_mm", "peak_command_mm", "acceleration_mm_s2",

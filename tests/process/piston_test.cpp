@@ -9,8 +9,8 @@
 #include <gtest/gtest.h>
 
 #include "nckit/cam/cam_table.hpp"
-#include "nckit/process/piston.hpp"
-#include "nckit/process/piston_svg.hpp"
+#include "nckit/process/piston/piston.hpp"
+#include "nckit/process/piston/piston_svg.hpp"
 
 namespace nckit {
 namespace {
@@ -22,7 +22,7 @@ struct JobSpec {
     double d_from_mm = 89.8, d_to_mm = 89.92;
     double e_from_mm = 0.4, e_to_mm = 0.8;
     std::string shape = R"(shape = "ellipse2")";
-    std::string extra;        //!< more [piston] lines
+    std::string extra;  //!< more [piston] lines
     double stroke_mm = 1.0;
     double rpm = 2500;
 };

@@ -56,8 +56,8 @@ Recorded record(const std::string& program, ToolPathOptions options = {}) {
 }
 
 TEST(ToolPathRecorder, EveryMoveKeepsItsLineAndTimesFollowThePlan) {
-    const Recorded r = record(
-        "G0 X0 Y0 Z5\nG1 Z0 F300\nG1 X20 F1200\nG1 X20\nG3 X30 Y10 I0 J10\nG1 Y30\nG0 Z5\nG0 X0 Y0\nM30\n");
+    const Recorded r =
+        record("G0 X0 Y0 Z5\nG1 Z0 F300\nG1 X20 F1200\nG1 X20\nG3 X30 Y10 I0 J10\nG1 Y30\nG0 Z5\nG0 X0 Y0\nM30\n");
     ASSERT_EQ(static_cast<std::int64_t>(r.report.moves.size()), r.motion_moves);
     EXPECT_DOUBLE_EQ(r.report.cycle_time_s, r.planned_cycle_s);
     const std::uint32_t lines[] = {1, 2, 3, 4, 5, 6, 7, 8};
@@ -144,7 +144,8 @@ TEST(Decimate, RandomPolylinesStayWithinTolerance) {
             const ReportVertex& b = chain[c + 1];
             const double dx = b.x_mm - a.x_mm, dy = b.y_mm - a.y_mm, dz = b.z_mm - a.z_mm;
             const double len2 = dx * dx + dy * dy + dz * dz;
-            const double t = std::clamp(((p.x_mm - a.x_mm) * dx + (p.y_mm - a.y_mm) * dy + (p.z_mm - a.z_mm) * dz) / len2, 0.0, 1.0);
+            const double t =
+                std::clamp(((p.x_mm - a.x_mm) * dx + (p.y_mm - a.y_mm) * dy + (p.z_mm - a.z_mm) * dz) / len2, 0.0, 1.0);
             const double d = std::hypot(p.x_mm - a.x_mm - t * dx, p.y_mm - a.y_mm - t * dy, p.z_mm - a.z_mm - t * dz);
             EXPECT_LE(d, tolerance + 1e-12);
         }
@@ -183,8 +184,8 @@ TEST(Payload, DeltaBlobsRoundTripAndGzipInflates) {
     const auto header = nlohmann::json::parse(packed.substr(4, head_len));
     const std::size_t base = (4 + head_len + 7) / 8 * 8;
     const auto& e = header["blobs"]["v"];
-    const auto decoded = decode_delta(packed.substr(base + e["offset"].get<std::size_t>(), e["length"].get<std::size_t>()),
-                                      e["count"], e["scale"]);
+    const auto decoded = decode_delta(
+        packed.substr(base + e["offset"].get<std::size_t>(), e["length"].get<std::size_t>()), e["count"], e["scale"]);
     ASSERT_EQ(decoded.size(), values.size());
     for (std::size_t i = 0; i < values.size(); ++i) EXPECT_NEAR(decoded[i], values[i], 0.0005);
     EXPECT_EQ(packed.substr(base + header["blobs"]["t"]["offset"].get<std::size_t>(), 6), "G1 X1\n");

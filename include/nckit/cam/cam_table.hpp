@@ -95,9 +95,7 @@ public:
     [[nodiscard]] std::size_t theta_cells() const { return theta_cells_; }
     //! Cells along Z.
     [[nodiscard]] std::size_t z_cells() const { return z_cells_; }
-    [[nodiscard]] double theta_step_deg() const {
-        return 360.0 / static_cast<double>(theta_cells_);
-    }
+    [[nodiscard]] double theta_step_deg() const { return 360.0 / static_cast<double>(theta_cells_); }
     [[nodiscard]] double z_from_mm() const { return z_from_mm_; }
     [[nodiscard]] double z_to_mm() const { return z_to_mm_; }
     //! Bytes of patch coefficients.
@@ -120,17 +118,17 @@ private:
 
     std::vector<double> coefficients_;  //!< patch_size per cell, Z row by Z row
     std::size_t theta_cells_ = 0;
-    std::size_t theta_mask_ = 0;        //!< theta_cells_ − 1
+    std::size_t theta_mask_ = 0;  //!< theta_cells_ − 1
     std::size_t z_cells_ = 0;
-    double theta_cells_per_deg_ = 0;    //!< cells / deg
-    double z_cells_per_mm_ = 0;         //!< cells / mm
-    double z_top_ = 0;                  //!< z_cells_ as a double: the clamp's upper end
-    std::int64_t z_last_ = 0;           //!< z_cells_ − 1: the last row
-    double z_from_mm_ = 0;              //!< mm
-    double z_to_mm_ = 0;                //!< mm
-    double tolerance_mm_ = 0;           //!< mm
-    double error_bound_mm_ = 0;         //!< mm
-    double checked_error_mm_ = 0;       //!< mm
+    double theta_cells_per_deg_ = 0;  //!< cells / deg
+    double z_cells_per_mm_ = 0;       //!< cells / mm
+    double z_top_ = 0;                //!< z_cells_ as a double: the clamp's upper end
+    std::int64_t z_last_ = 0;         //!< z_cells_ − 1: the last row
+    double z_from_mm_ = 0;            //!< mm
+    double z_to_mm_ = 0;              //!< mm
+    double tolerance_mm_ = 0;         //!< mm
+    double error_bound_mm_ = 0;       //!< mm
+    double checked_error_mm_ = 0;     //!< mm
 };
 
 }  // namespace nckit::cam

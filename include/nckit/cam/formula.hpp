@@ -23,8 +23,8 @@ class Formula {
 public:
     //! The formula, or why `text` does not compile with exactly `variables` (at most 4, e.g.
     //! {"Z", "PHI"}) defined. The text must give one value.
-    [[nodiscard]] static std::variant<Formula, FormulaError> compile(
-        std::string text, std::vector<std::string> variables);
+    [[nodiscard]] static std::variant<Formula, FormulaError> compile(std::string text,
+                                                                     std::vector<std::string> variables);
 
     Formula(const Formula& other);
     Formula& operator=(const Formula& other);

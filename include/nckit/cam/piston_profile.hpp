@@ -10,14 +10,11 @@ namespace nckit::cam {
 //! part is a formula; copies are independent.
 class PistonProfile {
 public:
-    PistonProfile(DrawingFunction major_diameter_mm, DrawingFunction ovality_mm,
-                  SectionShape shape);
+    PistonProfile(DrawingFunction major_diameter_mm, DrawingFunction ovality_mm, SectionShape shape);
 
     //! mm, the section's radius at `theta_deg` from the major axis, `z_mm` from the crown.
     [[nodiscard]] double radius_mm(double theta_deg, double z_mm) const;
-    [[nodiscard]] double operator()(double theta_deg, double z_mm) const {
-        return radius_mm(theta_deg, z_mm);
-    }
+    [[nodiscard]] double operator()(double theta_deg, double z_mm) const { return radius_mm(theta_deg, z_mm); }
 
     //! D(Z), mm
     [[nodiscard]] double major_diameter_mm(double z_mm) const { return major_diameter_(z_mm); }

@@ -33,8 +33,8 @@ struct DemandGrid {
 //! The demand of `radius_mm(θ, z)` over the stations `z_mm` (increasing, at least one).
 //! d²r/dθ² comes from second differences of the sampled turn, which at 0.25° are within a few
 //! parts per million of the derivative for a drawing's low harmonics.
-[[nodiscard]] ProfileDemand measure_demand(const CamFunction& radius_mm,
-                                           std::span<const double> z_mm, DemandGrid grid = {});
+[[nodiscard]] ProfileDemand measure_demand(const CamFunction& radius_mm, std::span<const double> z_mm,
+                                           DemandGrid grid = {});
 
 //! The Z values the demand grid visits: the stations and the points between them.
 [[nodiscard]] std::vector<double> demand_z_grid(std::span<const double> z_mm, int z_subdivisions);

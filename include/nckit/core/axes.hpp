@@ -11,8 +11,12 @@ enum class Axis : std::size_t { X, Y, Z, A, B, C, U, V, W };
 inline constexpr std::size_t axis_count = 9;
 inline constexpr std::string_view axis_letters = "XYZABCUVW";
 
-[[nodiscard]] constexpr std::size_t index(Axis axis) { return static_cast<std::size_t>(axis); }
-[[nodiscard]] constexpr char letter(Axis axis) { return axis_letters[index(axis)]; }
+[[nodiscard]] constexpr std::size_t index(Axis axis) {
+    return static_cast<std::size_t>(axis);
+}
+[[nodiscard]] constexpr char letter(Axis axis) {
+    return axis_letters[index(axis)];
+}
 
 //! The axis a word letter names (either case), or nothing.
 [[nodiscard]] constexpr std::optional<Axis> axis_from_letter(char c) {
@@ -56,6 +60,8 @@ private:
     unsigned bits_ = 0;
 };
 
-[[nodiscard]] constexpr bool is_rotary(Axis a) { return a == Axis::A || a == Axis::B || a == Axis::C; }
+[[nodiscard]] constexpr bool is_rotary(Axis a) {
+    return a == Axis::A || a == Axis::B || a == Axis::C;
+}
 
 }  // namespace nckit

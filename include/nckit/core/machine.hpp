@@ -35,8 +35,8 @@ enum class PhaseTableKind {
 };
 
 //! The config spelling of each PhaseTableKind, indexed by the enum's value.
-inline constexpr std::array<std::string_view, 5> phase_table_names{
-    "none", "3phase-6beat", "3phase-3beat", "2phase-full", "2phase-half"};
+inline constexpr std::array<std::string_view, 5> phase_table_names{"none", "3phase-6beat", "3phase-3beat",
+                                                                   "2phase-full", "2phase-half"};
 
 //! A servo axis's closed position loop as the second-order model
 //! gain / (T^2 s^2 + 2 damping T s + 1), T = 1 / (2 pi natural_frequency_hz).
@@ -49,26 +49,26 @@ struct AxisServoConfig {
 struct AxisConfig {
     Axis axis = Axis::X;
     AxisKind kind = AxisKind::linear;
-    double max_velocity = 0;      //!< mm/s (deg/s for rotary)
-    double max_acceleration = 0;  //!< mm/s^2 (deg/s^2)
-    double max_jerk = 0;          //!< mm/s^3 (deg/s^3)
-    double min = 0;               //!< travel limit, machine coordinates, mm (deg)
-    double max = 0;               //!< travel limit, machine coordinates, mm (deg)
-    double steps_per_unit = 0;    //!< motor steps per mm (deg)
-    double backlash = 0;          //!< mm (deg) lost on each reversal
+    double max_velocity = 0;               //!< mm/s (deg/s for rotary)
+    double max_acceleration = 0;           //!< mm/s^2 (deg/s^2)
+    double max_jerk = 0;                   //!< mm/s^3 (deg/s^3)
+    double min = 0;                        //!< travel limit, machine coordinates, mm (deg)
+    double max = 0;                        //!< travel limit, machine coordinates, mm (deg)
+    double steps_per_unit = 0;             //!< motor steps per mm (deg)
+    double backlash = 0;                   //!< mm (deg) lost on each reversal
     double backlash_rate_steps_s = 20000;  //!< steps/s at which a reversal's backlash is taken up
-    double home = 0;              //!< reference point G28 returns to, machine coordinates
+    double home = 0;                       //!< reference point G28 returns to, machine coordinates
     //! Where M6 takes this axis (rapid, machine coordinates) before the change; none: it stays.
     std::optional<double> tool_change;
     PhaseTableKind phase_table = PhaseTableKind::none;  //!< windings sequenced by the drive
-    bool port_active_low = false;    //!< phase-table port: winding bits inverted (sinking drivers)
-    std::uint8_t port_set_bits = 0;  //!< phase-table port: bits always written high (e.g. enable)
+    bool port_active_low = false;                       //!< phase-table port: winding bits inverted (sinking drivers)
+    std::uint8_t port_set_bits = 0;                     //!< phase-table port: bits always written high (e.g. enable)
     std::optional<AxisServoConfig> servo;  //!< a servo axis's position loop ([axis.servo]); none: open loop
 };
 
 struct SpindleConfig {
-    double max_rpm = 0;       //!< rpm
-    int encoder_counts = 0;   //!< counts per spindle turn; the index pulse comes at angle 0
+    double max_rpm = 0;      //!< rpm
+    int encoder_counts = 0;  //!< counts per spindle turn; the index pulse comes at angle 0
     //! Speed ripple the drive leaves, repeating with the angle: n = rpm·(1 + fraction·
     //! sin(per_turn·θ + phase)). 0 for an ideal spindle.
     double ripple_fraction = 0;
@@ -111,8 +111,8 @@ struct MachineConfig {
     //! `subroutine_path = ["DIR", ...]`: where a LinuxCNC `o<name> call` finds NAME.ngc (after
     //! `--library`), relative to the machine file.
     std::vector<std::filesystem::path> subroutine_path;
-    double servo_period_s = 0.001;  //!< s, trajectory sampling period
-    bool diameter_mode = false;     //!< lathe: X words are diameters, Moves carry radii
+    double servo_period_s = 0.001;       //!< s, trajectory sampling period
+    bool diameter_mode = false;          //!< lathe: X words are diameters, Moves carry radii
     std::vector<int> exact_stop_mcodes;  //!< M-codes that need the axes at rest
     //! M-codes that switch a cutting beam on / off (laser notching). A code in both this and
     //! exact_stop_mcodes switches at rest; one that is not an exact stop switches where the path
@@ -122,16 +122,16 @@ struct MachineConfig {
     DecimalPointInput decimal_point_input = DecimalPointInput::calculator;
     ProfileKind profile = ProfileKind::scurve;
     CompStartup cutter_comp_startup = CompStartup::type_b;  //!< `cutter_comp_startup = "type_a"`
-    GCodeSystem gcode_system = GCodeSystem::none;  //!< `gcode_system = "A"` (lathes only)
+    GCodeSystem gcode_system = GCodeSystem::none;           //!< `gcode_system = "A"` (lathes only)
     //! G codes in force at power-up (`startup_gcodes = "G18 G21 G40 G97 G99"`), read in the
     //! machine's G-code system before the program's first block; empty: none beyond the defaults.
     std::string startup_gcodes;
     SourceLocation startup_gcodes_at;  //!< where the key's value stands, for its errors
-    std::vector<AxisConfig> axes;   //!< in the order the config lists them
+    std::vector<AxisConfig> axes;      //!< in the order the config lists them
     SpindleConfig spindle;
     //! The tool table (`tools = "FILE"` in [machine], or `--tools FILE`); empty when none given.
     ToolTable tools;
-    std::string tools_file;         //!< where `tools` came from; empty for none
+    std::string tools_file;  //!< where `tools` came from; empty for none
     //! `[probe] surfaces`: where G31 skips; empty: a G31 never meets anything (an error).
     std::vector<ProbeSurface> probe_surfaces;
     //! `restart_safe_mm`: where `nckit restart` retracts the tool before its approach, a machine
@@ -154,8 +154,7 @@ struct MachineConfig {
 [[nodiscard]] MachineConfig default_mill();
 
 //! Parses and validates a machine config; every error carries FILE:LINE:COL.
-[[nodiscard]] Result<MachineConfig> parse_machine_config(std::string_view toml_text,
-                                                         const std::string& file_name);
+[[nodiscard]] Result<MachineConfig> parse_machine_config(std::string_view toml_text, const std::string& file_name);
 [[nodiscard]] Result<MachineConfig> load_machine_config(const std::filesystem::path& path);
 
 }  // namespace nckit

@@ -56,7 +56,7 @@ private:
     std::filesystem::path partial_;  // atomic_replace: TARGET.partial
     std::FILE* stream_ = nullptr;    // null once committed, discarded or moved from
     Kind kind_ = Kind::standard_output;
-    int registry_slot_ = -1;         // where the signal handler finds partial_
+    int registry_slot_ = -1;  // where the signal handler finds partial_
 };
 
 //! Replaces `path` (symlinks followed) by `bytes` through OutputFile: the atomic replace that

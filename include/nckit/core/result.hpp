@@ -11,9 +11,9 @@ namespace nckit {
 template <class T>
 class Result {
 public:
-    Result(T value) : state_(std::move(value)) {}                        // NOLINT: implicit by design
+    Result(T value) : state_(std::move(value)) {}                                  // NOLINT: implicit by design
     Result(Diagnostic diagnostic) : state_(Diagnostics{std::move(diagnostic)}) {}  // NOLINT
-    Result(Diagnostics diagnostics) : state_(std::move(diagnostics)) {    // NOLINT
+    Result(Diagnostics diagnostics) : state_(std::move(diagnostics)) {             // NOLINT
         assert(!std::get<Diagnostics>(state_).empty());
     }
 

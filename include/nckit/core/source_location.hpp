@@ -15,7 +15,7 @@ struct SourceLocation {
     [[nodiscard]] const std::string& file_name() const;
 };
 
-[[nodiscard]] SourceLocation make_location(std::shared_ptr<const std::string> file,
-                                           std::uint32_t line, std::uint32_t column);
+[[nodiscard]] SourceLocation make_location(std::shared_ptr<const std::string> file, std::uint32_t line,
+                                           std::uint32_t column);
 
 }  // namespace nckit

@@ -12,7 +12,7 @@
 #include "nckit/core/result.hpp"
 #include "nckit/core/toml_table_reader.hpp"
 
-namespace nckit::detail {
+namespace nckit::core_detail {
 
 //! A parsed document and the file name its diagnostics carry.
 struct TomlFile {
@@ -50,8 +50,8 @@ template <class Job, class ReadTable>
 
 //! Loads `path` and reads it with read_job_table; `what` names the file in I/O errors.
 template <class Job, class ReadTable>
-[[nodiscard]] Result<Job> load_job_file(const std::filesystem::path& path, std::string_view what,
-                                        std::string_view name, ReadTable read) {
+[[nodiscard]] Result<Job> load_job_file(const std::filesystem::path& path, std::string_view what, std::string_view name,
+                                        ReadTable read) {
     Result<TomlFile> file = load_toml_file(path, what);
     if (!file) return file.diagnostics();
     return read_job_table<Job>(*file, name, read);
@@ -66,4 +66,4 @@ template <class Job, class ReadTable>
     return read_job_table<Job>(*file, name, read);
 }
 
-}  // namespace nckit::detail
+}  // namespace nckit::core_detail

@@ -15,7 +15,7 @@
 
 #include "nckit/core/diagnostic.hpp"
 
-namespace nckit::detail {
+namespace nckit::core_detail {
 
 //! Collects the diagnostics of one config file and stamps them with its name.
 struct ConfigSink {
@@ -36,11 +36,10 @@ enum class Sign { any, positive, non_negative };
 
 //! `node` as a finite number (an integer is accepted where a float is expected); `what` names
 //! it in messages, e.g. "'max_velocity'". Reports and returns nothing when it does not fit.
-[[nodiscard]] std::optional<double> to_number(const toml::node& node, std::string_view what,
-                                              Sign sign, ConfigSink& sink);
+[[nodiscard]] std::optional<double> to_number(const toml::node& node, std::string_view what, Sign sign,
+                                              ConfigSink& sink);
 //! `node` as an integer that fits an `int`.
-[[nodiscard]] std::optional<int> to_int(const toml::node& node, std::string_view what, Sign sign,
-                                        ConfigSink& sink);
+[[nodiscard]] std::optional<int> to_int(const toml::node& node, std::string_view what, Sign sign, ConfigSink& sink);
 
 class TableReader {
 public:
@@ -89,4 +88,4 @@ private:
     std::vector<std::string> known_keys_;
 };
 
-}  // namespace nckit::detail
+}  // namespace nckit::core_detail

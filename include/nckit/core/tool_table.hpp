@@ -15,17 +15,17 @@ namespace nckit {
 
 //! One row of the table. Every length is mm, angles deg; internal units whatever the file used.
 struct ToolEntry {
-    int number = 0;                //!< T number, also the H and D number that reads this row
-    int pocket = 0;                //!< tool changer pocket (LinuxCNC's P); 0 = unknown
-    double length_mm = 0;          //!< geometry length offset (H; LinuxCNC's Z column)
-    double length_wear_mm = 0;     //!< added to the length when H is applied
-    double radius_mm = 0;          //!< geometry radius (D; tool.tbl's D column is a diameter)
-    double radius_wear_mm = 0;     //!< added to the radius when D is applied
-    double x_offset_mm = 0;        //!< lathe: X offset (radius value); its Z offset is length_mm
-    double x_wear_mm = 0;          //!< lathe: X wear (radius value), added to x_offset_mm
-    int orientation = 0;           //!< lathe: tip orientation 0..9 (LinuxCNC's Q)
-    double front_angle_deg = 0;    //!< lathe: LinuxCNC's I
-    double back_angle_deg = 0;     //!< lathe: LinuxCNC's J
+    int number = 0;              //!< T number, also the H and D number that reads this row
+    int pocket = 0;              //!< tool changer pocket (LinuxCNC's P); 0 = unknown
+    double length_mm = 0;        //!< geometry length offset (H; LinuxCNC's Z column)
+    double length_wear_mm = 0;   //!< added to the length when H is applied
+    double radius_mm = 0;        //!< geometry radius (D; tool.tbl's D column is a diameter)
+    double radius_wear_mm = 0;   //!< added to the radius when D is applied
+    double x_offset_mm = 0;      //!< lathe: X offset (radius value); its Z offset is length_mm
+    double x_wear_mm = 0;        //!< lathe: X wear (radius value), added to x_offset_mm
+    int orientation = 0;         //!< lathe: tip orientation 0..9 (LinuxCNC's Q)
+    double front_angle_deg = 0;  //!< lathe: LinuxCNC's I
+    double back_angle_deg = 0;   //!< lathe: LinuxCNC's J
     std::string comment;
 
     //! What G43 H applies: geometry plus wear.

@@ -16,15 +16,15 @@ enum class TimerStatus {
 //! `rate_hz` and `speed_error` are 0 and only the range fields are meaningful.
 struct TimerSetting {
     TimerStatus status = TimerStatus::ok;
-    double wanted_hz = 0;          //!< steps/s asked for
-    std::uint32_t divisor = 0;     //!< clock counts per step
-    double rate_hz = 0;            //!< steps/s the divisor really gives: clock_hz / divisor
+    double wanted_hz = 0;       //!< steps/s asked for
+    std::uint32_t divisor = 0;  //!< clock counts per step
+    double rate_hz = 0;         //!< steps/s the divisor really gives: clock_hz / divisor
     //! Relative, signed: rate_hz / wanted_hz - 1, i.e. crosshatch.md's |f/R - n| / n with a
     //! sign. steppers.md's |1 - R n / f| is measured against the real rate instead; the two
     //! differ only by the square of the error.
     double speed_error = 0;
-    double min_rate_hz = 0;        //!< slowest rate the counter makes: clock_hz / max_divisor
-    double max_rate_hz = 0;        //!< fastest rate the counter makes: clock_hz / min_divisor
+    double min_rate_hz = 0;  //!< slowest rate the counter makes: clock_hz / max_divisor
+    double max_rate_hz = 0;  //!< fastest rate the counter makes: clock_hz / min_divisor
 
     [[nodiscard]] bool ok() const { return status == TimerStatus::ok; }
     //! One line for a person: the setting, or why it failed and which range is achievable.
@@ -35,8 +35,8 @@ struct TimerSetting {
 //! Modes 2 and 3 of the 8253 need a divisor of at least 2; a loaded 0 counts 65536, so a
 //! caller who uses that convention sets max_divisor = 65536 (load_value() then writes 0).
 struct IntervalTimer {
-    double clock_hz = 1'000'000.0;    //!< Hz, counter input clock
-    std::uint32_t min_divisor = 2;    //!< smallest divisor the counter mode accepts
+    double clock_hz = 1'000'000.0;      //!< Hz, counter input clock
+    std::uint32_t min_divisor = 2;      //!< smallest divisor the counter mode accepts
     std::uint32_t max_divisor = 65535;  //!< 65535, or 65536 with the 0 = 65536 convention
 
     [[nodiscard]] double min_rate_hz() const { return clock_hz / max_divisor; }

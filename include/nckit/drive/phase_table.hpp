@@ -17,7 +17,7 @@ enum class Direction { forward, reverse };
 //! How winding patterns become the port byte. Winding A is the highest of the table's
 //! winding bits (3-phase: A bit 2, B bit 1, C bit 0; 2-phase: A bit 3 .. D bit 0).
 struct PortEncoding {
-    bool active_low = false;        //!< invert the winding bits (drivers that sink current)
+    bool active_low = false;  //!< invert the winding bits (drivers that sink current)
     //! Bits always written high (e.g. an enable line); keep them clear of the winding bits.
     std::uint8_t set_bits = 0;
 };
@@ -45,15 +45,13 @@ inline constexpr PortEncoding seed_port_encoding{true, 0x08};
 //! counts run the table backwards). Taken mod the table length, so it never drifts.
 [[nodiscard]] std::uint8_t winding_pattern(PhaseTableKind kind, std::int64_t step_count);
 //! The byte written to the port for that pattern under `encoding`.
-[[nodiscard]] std::uint8_t port_byte(PhaseTableKind kind, std::int64_t step_count,
-                                     PortEncoding encoding = {});
+[[nodiscard]] std::uint8_t port_byte(PhaseTableKind kind, std::int64_t step_count, PortEncoding encoding = {});
 
 //! A motor's phase output driven by single steps: holds the absolute step count, so the
 //! output after any sequence of steps depends only on the net count.
 class PhaseSequencer {
 public:
-    explicit PhaseSequencer(PhaseTableKind kind, PortEncoding encoding = {},
-                            std::int64_t step_count = 0)
+    explicit PhaseSequencer(PhaseTableKind kind, PortEncoding encoding = {}, std::int64_t step_count = 0)
         : kind_(kind), encoding_(encoding), step_count_(step_count) {}
 
     //! One step in `direction`; returns the byte to write to the port.

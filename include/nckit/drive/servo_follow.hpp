@@ -19,7 +19,7 @@ namespace nckit::drive {
 
 //! One servo axis at one sample time.
 struct ServoSample {
-    double t_s = 0;                 //!< s, n × servo period
+    double t_s = 0;  //!< s, n × servo period
     Axis axis = Axis::X;
     double setpoint_mm = 0;         //!< mm (deg): the trajectory's position at t_s
     double actual_mm = 0;           //!< mm (deg): the model's position at t_s

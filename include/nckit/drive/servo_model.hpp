@@ -11,15 +11,13 @@ struct ServoParameters {
     double damping = 1.0;          //!< zeta, dimensionless, >= 0
 
     //! T from the natural frequency f_n: T = 1 / (2 pi f_n).
-    [[nodiscard]] static ServoParameters from_natural_frequency(double gain,
-                                                                double natural_frequency_hz,
+    [[nodiscard]] static ServoParameters from_natural_frequency(double gain, double natural_frequency_hz,
                                                                 double damping);
     [[nodiscard]] double natural_frequency_rad_s() const { return 1.0 / time_constant_s; }
 };
 
 //! G(j omega) of the continuous model.
-[[nodiscard]] std::complex<double> frequency_response(const ServoParameters& parameters,
-                                                      double omega_rad_s);
+[[nodiscard]] std::complex<double> frequency_response(const ServoParameters& parameters, double omega_rad_s);
 
 struct ServoState {
     double position = 0.0;  //!< mm (deg): the model's output y

@@ -23,10 +23,10 @@ enum class StepSolver {
 
 //! One motor step.
 struct StepEvent {
-    std::int64_t t_ns = 0;     //!< ns from the trajectory start (the exact crossing time, rounded)
-    std::uint8_t axis = 0;     //!< index into MachineConfig::axes (the machine file's axis order)
-    std::int8_t direction = 0; //!< +1 or -1
-    bool backlash = false;     //!< an extra step taking up backlash after a reversal
+    std::int64_t t_ns = 0;      //!< ns from the trajectory start (the exact crossing time, rounded)
+    std::uint8_t axis = 0;      //!< index into MachineConfig::axes (the machine file's axis order)
+    std::int8_t direction = 0;  //!< +1 or -1
+    bool backlash = false;      //!< an extra step taking up backlash after a reversal
 };
 
 //! Streaming step generator: add() the planner's pieces in order, finish(), and pop() events in
@@ -75,17 +75,17 @@ public:
 private:
     struct AxisState {
         Axis axis = Axis::X;
-        double spu = 1;                     //!< steps per mm (deg)
-        std::int64_t backlash_steps = 0;    //!< steps added on each reversal
+        double spu = 1;                   //!< steps per mm (deg)
+        std::int64_t backlash_steps = 0;  //!< steps added on each reversal
         std::int64_t backlash_interval_ns = 50000;
-        std::int64_t count = 0;             //!< commanded count
+        std::int64_t count = 0;  //!< commanded count
         std::int64_t motor_count = 0;
-        std::int64_t start_count = 0;       //!< count at the first position
-        int last_direction = 0;             //!< of the last commanded step, 0 before any
-        std::int64_t motor_last_ns = 0;     //!< time of the last motor step
-        bool catching_up = false;           //!< steps delayed behind a backlash take-up
-        bool started = false;               //!< count initialised from the first position
-        std::vector<StepEvent> queue;       //!< events not yet popped, in time order
+        std::int64_t start_count = 0;    //!< count at the first position
+        int last_direction = 0;          //!< of the last commanded step, 0 before any
+        std::int64_t motor_last_ns = 0;  //!< time of the last motor step
+        bool catching_up = false;        //!< steps delayed behind a backlash take-up
+        bool started = false;            //!< count initialised from the first position
+        std::vector<StepEvent> queue;    //!< events not yet popped, in time order
         std::size_t head = 0;
     };
     struct Interval;
@@ -99,8 +99,8 @@ private:
     std::vector<AxisState> axes_;
     std::int64_t horizon_ns_ = 0;  //!< events before this are final
     bool finished_ = false;
-    bool dirty_ = false;             //!< pieces added since the last release()
-    std::vector<StepEvent> ready_;   //!< merged events ready to pop
+    bool dirty_ = false;            //!< pieces added since the last release()
+    std::vector<StepEvent> ready_;  //!< merged events ready to pop
     std::size_t ready_head_ = 0;
     std::vector<StepEvent> merged_;  //!< scratch for merging
 };

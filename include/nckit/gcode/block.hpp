@@ -10,22 +10,22 @@ namespace nckit {
 
 //! One address word as written: `X-12.5` is {'X', -12.5, true}.
 struct Word {
-    char letter = 0;                //!< upper case
-    double value = 0;               //!< as written, before unit or least-increment scaling
-    bool has_decimal_point = false; //!< `X10` and `X10.` mean different things on some controls
-    std::uint32_t column = 0;       //!< 1-based column of the letter
-    std::int32_t expr = -1;         //!< root in Block::exprs when the value is an expression
+    char letter = 0;                 //!< upper case
+    double value = 0;                //!< as written, before unit or least-increment scaling
+    bool has_decimal_point = false;  //!< `X10` and `X10.` mean different things on some controls
+    std::uint32_t column = 0;        //!< 1-based column of the letter
+    std::int32_t expr = -1;          //!< root in Block::exprs when the value is an expression
 };
 
 enum class StatementKind : std::uint8_t {
     none,
-    assign,     //!< `#target = value`
-    go_to,      //!< `GOTO value`
-    if_goto,    //!< `IF [condition] GOTO value`
-    if_then,    //!< `IF [condition] THEN #target = value`
-    while_do,   //!< `WHILE [condition] DOm`
-    do_loop,    //!< `DOm` without WHILE: loops for ever (until a GOTO leaves)
-    end_loop    //!< `ENDm`
+    assign,    //!< `#target = value`
+    go_to,     //!< `GOTO value`
+    if_goto,   //!< `IF [condition] GOTO value`
+    if_then,   //!< `IF [condition] THEN #target = value`
+    while_do,  //!< `WHILE [condition] DOm`
+    do_loop,   //!< `DOm` without WHILE: loops for ever (until a GOTO leaves)
+    end_loop   //!< `ENDm`
 };
 
 //! The macro statement of a block, if it has one (a block holds one statement at most).
@@ -40,13 +40,13 @@ struct MacroStatement {
 
 //! One line of a program, parsed but not yet understood: no modal state, no semantics.
 struct Block {
-    SourceLocation location;        //!< the line; column 1
-    bool block_delete = false;      //!< the line starts with '/'
-    bool tape_mark = false;         //!< a '%' line
-    std::vector<Word> words;        //!< in the order written, N and O included
-    ExprArena exprs;                //!< nodes of every expression in the block
+    SourceLocation location;    //!< the line; column 1
+    bool block_delete = false;  //!< the line starts with '/'
+    bool tape_mark = false;     //!< a '%' line
+    std::vector<Word> words;    //!< in the order written, N and O included
+    ExprArena exprs;            //!< nodes of every expression in the block
     MacroStatement statement;
-    std::string comment;            //!< text of the block's first ( ) comment
+    std::string comment;  //!< text of the block's first ( ) comment
     //! Fanuc's corner word: `,R5` (letter 'R', round the corner after this move) or `,C2`
     //! (letter 'C', chamfer it); letter 0 when the block has none. Kept apart from `words`, whose
     //! R and C mean other things.

@@ -3,7 +3,7 @@
 // Diagnostic's `alarm` carries one of these, or 3000 + n for a user alarm from #3000.
 namespace nckit::alarm {
 
-inline constexpr int too_many_blocks = 100;     //!< nckit's own: block budget used up (runaway loop)
+inline constexpr int too_many_blocks = 100;  //!< nckit's own: block budget used up (runaway loop)
 inline constexpr int division_by_zero = 112;
 inline constexpr int format = 114;              //!< format error in a macro statement
 inline constexpr int illegal_variable = 115;    //!< no such variable number

@@ -17,9 +17,9 @@ class ProgramSource {
 public:
     //! One line of the program, without its line end.
     struct Line {
-        std::string_view text;      //!< valid until the next call to next() or seek()
-        std::uint32_t number = 0;   //!< 1-based
-        std::uint64_t offset = 0;   //!< byte offset of the line's first character
+        std::string_view text;     //!< valid until the next call to next() or seek()
+        std::uint32_t number = 0;  //!< 1-based
+        std::uint64_t offset = 0;  //!< byte offset of the line's first character
     };
 
     //! A block longer than this is an error, never a silent truncation.
@@ -55,15 +55,15 @@ private:
     bool refill();
 
     std::shared_ptr<const std::string> name_;
-    std::FILE* file_ = nullptr;   // null when reading from text_
-    std::string text_;            // whole program (string input) or the read buffer (file input)
-    std::size_t begin_ = 0;       // next unread byte in text_
-    std::size_t end_ = 0;         // end of valid bytes in text_
+    std::FILE* file_ = nullptr;        // null when reading from text_
+    std::string text_;                 // whole program (string input) or the read buffer (file input)
+    std::size_t begin_ = 0;            // next unread byte in text_
+    std::size_t end_ = 0;              // end of valid bytes in text_
     std::uint64_t buffer_offset_ = 0;  // file offset of text_[0]
     std::uint32_t line_number_ = 0;
     bool eof_ = false;
     bool rereadable_ = true;
-    std::string line_;            // a line that straddles two buffer fills
+    std::string line_;  // a line that straddles two buffer fills
 };
 
 }  // namespace nckit

@@ -57,8 +57,8 @@ private:
         double start[2]{};
         double end[2]{};
         double center[2]{};
-        int turn = 0;            //!< arcs: +1 counter-clockwise (G3), -1 clockwise (G2)
-        double sweep_rad = 0;    //!< arcs: programmed sweep, turns included
+        int turn = 0;          //!< arcs: +1 counter-clockwise (G3), -1 clockwise (G2)
+        double sweep_rad = 0;  //!< arcs: programmed sweep, turns included
         bool rapid = false;
 
         //! The same element as the corner geometry takes it.
@@ -80,17 +80,17 @@ private:
 
     CompStartup startup_;
     Mode mode_ = Mode::off;
-    int side_ = 1;          //!< +1 left (G41), -1 right (G42)
+    int side_ = 1;  //!< +1 left (G41), -1 right (G42)
     double radius_mm_ = 0;
     Plane plane_ = Plane::xy;
-    AxisVector tool_;       //!< where the tool is after everything held (nose centre), mm / deg
-    AxisVector tip_shift_;  //!< imaginary tip less nose centre of a lathe tool, mm
-    Programmed programmed_; //!< the held planar move as programmed
-    Programmed before_;     //!< the planar move before it, as programmed
-    bool has_before_ = false;  //!< before_ is a contour move (not the start-up move)
-    bool held_start_up_ = false;  //!< the held move is the start-up block
+    AxisVector tool_;               //!< where the tool is after everything held (nose centre), mm / deg
+    AxisVector tip_shift_;          //!< imaginary tip less nose centre of a lathe tool, mm
+    Programmed programmed_;         //!< the held planar move as programmed
+    Programmed before_;             //!< the planar move before it, as programmed
+    bool has_before_ = false;       //!< before_ is a contour move (not the start-up move)
+    bool held_start_up_ = false;    //!< the held move is the start-up block
     bool leave_from_tool_ = false;  //!< G41/G42 came before the exit move after G40
-    std::vector<Move> held_;      //!< [0]: the held planar move, compensated; then what followed it
+    std::vector<Move> held_;        //!< [0]: the held planar move, compensated; then what followed it
 };
 
 }  // namespace nckit

@@ -17,23 +17,23 @@ struct ModalView {
     AxisVector g92_offset;          //!< G92 / G50 coordinate shift, mm / deg
     AxisVector g52_offset;          //!< G52 local shift, mm / deg
     Plane plane = Plane::xy;
-    bool incremental = false;       //!< G91
+    bool incremental = false;  //!< G91
     FeedMode feed_mode = FeedMode::per_minute;
-    bool diameter_mode = false;     //!< G7: X words are diameters
-    int motion_code = 0;            //!< active motion G code x 10 (G1 = 10, G33 = 330, G80 = 800)
-    PathControl path;               //!< G61 / G64 P
-    double feed = 0;                //!< mm/min (G94) or mm/rev (G95)
-    double spindle_rpm = 0;         //!< commanded rpm under G97
-    int spindle_direction = 0;      //!< 1 = M3, -1 = M4, 0 = stopped
+    bool diameter_mode = false;           //!< G7: X words are diameters
+    int motion_code = 0;                  //!< active motion G code x 10 (G1 = 10, G33 = 330, G80 = 800)
+    PathControl path;                     //!< G61 / G64 P
+    double feed = 0;                      //!< mm/min (G94) or mm/rev (G95)
+    double spindle_rpm = 0;               //!< commanded rpm under G97
+    int spindle_direction = 0;            //!< 1 = M3, -1 = M4, 0 = stopped
     bool constant_surface_speed = false;  //!< G96
     double surface_speed_m_min = 0;       //!< G96 S, m/min
-    int tool = 0;                   //!< last T word
-    int tool_in_spindle = 0;        //!< the tool M6 put in
-    int length_offset_h = 0;        //!< modal H number
-    int length_offset_code = 490;   //!< G43 = 430, G44 = 440, G43.1 = 431, G49 = 490
-    AxisVector tool_offset;         //!< tool length offset in force, machine mm
-    bool cutter_compensation = false;  //!< G41/G42 engaged: a move's end depends on the next
-    bool transform_active = false;  //!< G51.1 mirror, G51 scaling or G68 rotation in force
+    int tool = 0;                         //!< last T word
+    int tool_in_spindle = 0;              //!< the tool M6 put in
+    int length_offset_h = 0;              //!< modal H number
+    int length_offset_code = 490;         //!< G43 = 430, G44 = 440, G43.1 = 431, G49 = 490
+    AxisVector tool_offset;               //!< tool length offset in force, machine mm
+    bool cutter_compensation = false;     //!< G41/G42 engaged: a move's end depends on the next
+    bool transform_active = false;        //!< G51.1 mirror, G51 scaling or G68 rotation in force
 };
 
 }  // namespace nckit

@@ -18,20 +18,20 @@ struct Feed {
 
 //! How the path may pass the end of a move (G61, G64 P, G9).
 struct PathControl {
-    bool exact_stop = false;    //!< axes come to rest at the end point
-    double tolerance_mm = 0;    //!< G64 P: largest allowed distance from the corner; 0 = none given
+    bool exact_stop = false;  //!< axes come to rest at the end point
+    double tolerance_mm = 0;  //!< G64 P: largest allowed distance from the corner; 0 = none given
 };
 
 //! G0 (rapid = true) or G1.
 struct Line {
     AxisVector from;  //!< machine coordinates, mm / deg
     AxisVector to;
-    Feed feed;        //!< unused for rapids
+    Feed feed;  //!< unused for rapids
     bool rapid = false;
     PathControl path;
 };
 
-enum class Plane { xy, zx, yz };                 // G17, G18, G19
+enum class Plane { xy, zx, yz };                          // G17, G18, G19
 enum class ArcDirection { clockwise, counterclockwise };  // G2, G3
 
 //! G2/G3, including helices (the axis normal to the plane and any other axis move linearly).
@@ -66,11 +66,11 @@ enum class IoKind {
 //! An event for the machine's I/O: M-functions, spindle, coolant, laser.
 struct Io {
     IoKind kind = IoKind::mcode;
-    int number = 0;      //!< M or T number
-    double value = 0;    //!< rpm for spindle_speed and for M3/M4; m/min under G96
+    int number = 0;                       //!< M or T number
+    double value = 0;                     //!< rpm for spindle_speed and for M3/M4; m/min under G96
     bool constant_surface_speed = false;  //!< spindle_speed under G96
     double rpm_clamp = 0;                 //!< G50 S limit under G96, rpm; 0 = none
-    bool waits = false;  //!< axes must be at rest before it (exact-stop M-codes, M0/M1/M2/M30)
+    bool waits = false;                   //!< axes must be at rest before it (exact-stop M-codes, M0/M1/M2/M30)
 };
 
 //! One element of the interpreter's output stream, with the block that made it.

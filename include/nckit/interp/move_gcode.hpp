@@ -54,8 +54,8 @@ private:
     const MachineConfig& machine_;
     Plane plane_ = Plane::xy;
     FeedMode feed_mode_ = FeedMode::per_minute;
-    double feed_ = -1;         // the F last written, in its mode's unit
-    PathControl path_;         // G64 with no tolerance, as the header sets
+    double feed_ = -1;  // the F last written, in its mode's unit
+    PathControl path_;  // G64 with no tolerance, as the header sets
     bool ended_ = false;
     int decimals_ = -1;
     double worst_deviation_mm_ = 0;

@@ -28,17 +28,17 @@ struct RestartTarget {
 //! The spindle, tool and I/O state the events before the target left, which a restart program
 //! must switch on again before it moves.
 struct RestartIo {
-    int tool_selected = 0;     //!< last T word, 0 for none
-    int tool_in_spindle = 0;   //!< the T last put in by M6, 0 for none
-    bool speed_set = false;    //!< an S word ran
-    double speed = 0;          //!< rpm, or m/min under G96
+    int tool_selected = 0;    //!< last T word, 0 for none
+    int tool_in_spindle = 0;  //!< the T last put in by M6, 0 for none
+    bool speed_set = false;   //!< an S word ran
+    double speed = 0;         //!< rpm, or m/min under G96
     bool constant_surface_speed = false;
-    double rpm_clamp = 0;      //!< G96's clamp (G50 S / D), rpm; 0 = none
-    int spindle_mcode = 5;     //!< 3, 4 or 5
-    double spindle_rpm = 0;    //!< the rpm the M3/M4 event carried
-    bool mist = false;         //!< M7
-    bool flood = false;        //!< M8
-    std::vector<int> laser_on; //!< laser on-codes in force (the machine's laser_on_mcodes)
+    double rpm_clamp = 0;       //!< G96's clamp (G50 S / D), rpm; 0 = none
+    int spindle_mcode = 5;      //!< 3, 4 or 5
+    double spindle_rpm = 0;     //!< the rpm the M3/M4 event carried
+    bool mist = false;          //!< M7
+    bool flood = false;         //!< M8
+    std::vector<int> laser_on;  //!< laser on-codes in force (the machine's laser_on_mcodes)
 };
 
 //! How the tool comes back: retract, rapid over the point, take up backlash, feed down.
@@ -54,15 +54,15 @@ struct RestartApproach {
 };
 
 struct RestartReport {
-    SourceLocation where;             //!< the target block
+    SourceLocation where;  //!< the target block
     std::int64_t sequence_number = -1;
-    std::int64_t block = 0;           //!< the target's ordinal among executed blocks, 1-based
-    std::int64_t first_record = 0;    //!< index of its first move in the original run, 0-based
-    std::uint32_t rest_line = 0;      //!< line of the restart program where the rest begins
-    ModalView state;                  //!< modal state in force before the target block
+    std::int64_t block = 0;         //!< the target's ordinal among executed blocks, 1-based
+    std::int64_t first_record = 0;  //!< index of its first move in the original run, 0-based
+    std::uint32_t rest_line = 0;    //!< line of the restart program where the rest begins
+    ModalView state;                //!< modal state in force before the target block
     RestartIo io;
     RestartApproach approach;
-    double worst_deviation_mm = 0;    //!< with rounding (decimals >= 0)
+    double worst_deviation_mm = 0;  //!< with rounding (decimals >= 0)
 };
 
 //! Runs `interpreter` from its start to the target without motion and writes the restart
@@ -70,7 +70,6 @@ struct RestartReport {
 //! (the error names the block and, for a thread, the pass's first block), or one never reached.
 //! `decimals` < 0 writes coordinates exactly (see GcodeWriter::round_to_decimals).
 [[nodiscard]] Result<RestartReport> write_restart(Interpreter& interpreter, const RestartTarget& target,
-                                                  const std::string& source_name, std::string& out,
-                                                  int decimals = -1);
+                                                  const std::string& source_name, std::string& out, int decimals = -1);
 
 }  // namespace nckit

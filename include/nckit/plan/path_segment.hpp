@@ -46,8 +46,12 @@ struct PathPoint {
 
 [[nodiscard]] AxisVector position_at(const PathSegment& segment, double s);
 [[nodiscard]] PathPoint point_at(const PathSegment& segment, double s);
-[[nodiscard]] inline AxisVector start_point(const PathSegment& segment) { return position_at(segment, 0.0); }
-[[nodiscard]] inline AxisVector end_point(const PathSegment& segment) { return position_at(segment, segment.length); }
+[[nodiscard]] inline AxisVector start_point(const PathSegment& segment) {
+    return position_at(segment, 0.0);
+}
+[[nodiscard]] inline AxisVector end_point(const PathSegment& segment) {
+    return position_at(segment, segment.length);
+}
 
 //! For every axis, bounds over the whole segment of |dq/ds|, |d²q/ds²|, |d³q/ds³|, and of the
 //! speed factor |p'| on the measured axes (the programmed feed applies to ṡ·|p'|).

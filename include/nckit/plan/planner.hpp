@@ -13,10 +13,10 @@
 namespace nckit {
 
 struct PlannerOptions {
-    std::optional<ProfileKind> profile;       //!< default: the machine's
-    double feed_override = 1.0;               //!< factor on programmed feeds, (0, 2]; not on rapids
-    std::size_t window_moves = 10000;         //!< most segments held for look-ahead (>= 2)
-    double default_blend_tolerance_mm = 0.05; //!< mm, G64 without P
+    std::optional<ProfileKind> profile;        //!< default: the machine's
+    double feed_override = 1.0;                //!< factor on programmed feeds, (0, 2]; not on rapids
+    std::size_t window_moves = 10000;          //!< most segments held for look-ahead (>= 2)
+    double default_blend_tolerance_mm = 0.05;  //!< mm, G64 without P
 };
 
 //! Streaming planner. push() the interpreter's moves in order, then finish(); pop() hands out

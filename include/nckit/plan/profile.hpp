@@ -18,8 +18,8 @@ struct ProfileLimits {
 
 //! A piece of constant jerk.
 struct ProfilePhase {
-    double duration_s = 0;    //!< s, > 0
-    double jerk = 0;          //!< mm/s^3 throughout the phase (0 in trapezoids)
+    double duration_s = 0;  //!< s, > 0
+    double jerk = 0;        //!< mm/s^3 throughout the phase (0 in trapezoids)
     //! mm/s^2 at the phase start. Continuous across S-curve phases; in a trapezoid, where jerk
     //! is infinite, it jumps, which a jerk alone cannot describe.
     double acceleration = 0;
@@ -75,8 +75,7 @@ struct Profile {
 //! mm, the distance of the time-optimal monotone speed change between two speeds (a = 0 at both
 //! ends), the same in both directions: the shortest distance over which plan_profile can go
 //! from one speed to the other.
-[[nodiscard]] double speed_change_distance(double v_from, double v_to, const ProfileLimits& limits,
-                                           ProfileKind kind);
+[[nodiscard]] double speed_change_distance(double v_from, double v_to, const ProfileLimits& limits, ProfileKind kind);
 
 //! mm/s, the highest end speed reachable over distance from v_start (accelerating all the way),
 //! at most max_velocity. Every end speed in [v_start, max_end_speed] is reachable.

@@ -31,7 +31,7 @@ inline constexpr double trapezoid_blend_normal_share = 0.9;
 //! Trapezoids have no jerk limit (their jerk is infinite at phase switches): only v and a apply.
 //! feed_mm_s is the programmed speed (already overridden); +infinity for rapids. Axes the
 //! machine lacks must not move (unchecked here). Returns max_velocity 0 when nothing moves.
-[[nodiscard]] ProfileLimits segment_limits(const PathSegment& segment, const MachineConfig& machine,
-                                           double feed_mm_s, ProfileKind kind, double normal_share = 0.5);
+[[nodiscard]] ProfileLimits segment_limits(const PathSegment& segment, const MachineConfig& machine, double feed_mm_s,
+                                           ProfileKind kind, double normal_share = 0.5);
 
 }  // namespace nckit

@@ -11,11 +11,11 @@
 namespace nckit {
 
 struct SyncStart {
-    SourceLocation where;           //!< the G32/G33 block
-    double t_s = 0;                 //!< s, when the axes start
-    double wait_s = 0;              //!< s spent waiting for the index pulse
-    double spindle_angle_deg = 0;   //!< spindle angle then, continuous
-    long long encoder_count = 0;    //!< encoder count then
+    SourceLocation where;          //!< the G32/G33 block
+    double t_s = 0;                //!< s, when the axes start
+    double wait_s = 0;             //!< s spent waiting for the index pulse
+    double spindle_angle_deg = 0;  //!< spindle angle then, continuous
+    long long encoder_count = 0;   //!< encoder count then
 };
 
 class SyncReport {

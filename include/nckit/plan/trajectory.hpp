@@ -19,30 +19,30 @@ enum class PieceKind {
 
 struct TrajectoryPiece {
     PieceKind kind = PieceKind::motion;
-    PathSegment segment;      //!< the path; a zero-length line at the place for dwell and io
+    PathSegment segment;  //!< the path; a zero-length line at the place for dwell and io
     //! s(t) of the run of tangent segments this one belongs to (one profile over several
     //! segments keeps the acceleration going through their junctions); empty for dwell and io.
     Profile profile;
-    double profile_offset_s = 0;   //!< s, the profile's time at this piece's start
-    double profile_offset_mm = 0;  //!< mm, the profile's position at the segment's start (s = 0)
-    bool ends_profile = true;      //!< the last piece of its run: ends exactly at the profile's end
-    double start_time_s = 0;  //!< s from the trajectory start
-    double duration_s = 0;    //!< s: the profile's duration, the dwell time, or 0
-    SourceLocation where;     //!< the block that made it (for blends: the block of the corner)
+    double profile_offset_s = 0;        //!< s, the profile's time at this piece's start
+    double profile_offset_mm = 0;       //!< mm, the profile's position at the segment's start (s = 0)
+    bool ends_profile = true;           //!< the last piece of its run: ends exactly at the profile's end
+    double start_time_s = 0;            //!< s from the trajectory start
+    double duration_s = 0;              //!< s: the profile's duration, the dwell time, or 0
+    SourceLocation where;               //!< the block that made it (for blends: the block of the corner)
     std::int64_t sequence_number = -1;  //!< the block's N number, -1 when none
-    Io io;                    //!< io pieces only
-    bool blend = false;       //!< motion inserted by the planner to round a corner
-    bool waits_for_index = false;  //!< a dwell until the spindle's index pulse (before G32/G33)
+    Io io;                              //!< io pieces only
+    bool blend = false;                 //!< motion inserted by the planner to round a corner
+    bool waits_for_index = false;       //!< a dwell until the spindle's index pulse (before G32/G33)
 };
 
 //! The axes' state at one time, exact (from the piecewise-cubic profile and the segment's
 //! analytic derivatives).
 struct TrajectorySample {
-    double t = 0;                //!< s
-    AxisVector position;         //!< mm, deg
-    AxisVector velocity;         //!< mm/s, deg/s
-    AxisVector acceleration;     //!< mm/s²
-    AxisVector jerk;             //!< mm/s³
+    double t = 0;                  //!< s
+    AxisVector position;           //!< mm, deg
+    AxisVector velocity;           //!< mm/s, deg/s
+    AxisVector acceleration;       //!< mm/s²
+    AxisVector jerk;               //!< mm/s³
     double path_velocity = 0;      //!< ṡ, units of s per second
     double path_acceleration = 0;  //!< s̈
 };

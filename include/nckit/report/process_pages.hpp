@@ -5,12 +5,12 @@
 // with render_report_html.
 #include <string>
 
-#include "nckit/cam/piston_job.hpp"
-#include "nckit/process/crosshatch.hpp"
-#include "nckit/process/crosshatch_scan.hpp"
-#include "nckit/process/eccentric.hpp"
-#include "nckit/process/notch.hpp"
-#include "nckit/process/piston.hpp"
+#include "nckit/process/piston/piston_job.hpp"
+#include "nckit/process/crosshatch/crosshatch.hpp"
+#include "nckit/process/crosshatch/crosshatch_scan.hpp"
+#include "nckit/process/eccentric/eccentric.hpp"
+#include "nckit/process/notch/notch.hpp"
+#include "nckit/process/piston/piston.hpp"
 #include "nckit/report/report_page.hpp"
 
 namespace nckit {

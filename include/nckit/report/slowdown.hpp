@@ -18,18 +18,18 @@ enum class Slowdown : std::uint8_t {
 
 //! How the path passes one end of a move.
 enum class Junction : std::uint8_t {
-    tangent,     //!< on at speed into a tangent neighbour
-    corner,      //!< a corner: a blend arc or a stop
-    exact_stop   //!< a stop the program asks for
+    tangent,    //!< on at speed into a tangent neighbour
+    corner,     //!< a corner: a blend arc or a stop
+    exact_stop  //!< a stop the program asks for
 };
 
 //! The facts one move's classification needs.
 struct SlowdownFacts {
-    double feed_mm_s = 0;        //!< programmed
-    double limit_mm_s = 0;       //!< the segment's own speed limit (segment_limits)
-    double peak_mm_s = 0;        //!< planned top speed on the move
-    double start_mm_s = 0;       //!< planned speed at its start
-    double end_mm_s = 0;         //!< planned speed at its end
+    double feed_mm_s = 0;   //!< programmed
+    double limit_mm_s = 0;  //!< the segment's own speed limit (segment_limits)
+    double peak_mm_s = 0;   //!< planned top speed on the move
+    double start_mm_s = 0;  //!< planned speed at its start
+    double end_mm_s = 0;    //!< planned speed at its end
     bool arc = false;
     Junction start = Junction::exact_stop;
     Junction end = Junction::exact_stop;

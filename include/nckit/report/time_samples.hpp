@@ -11,12 +11,12 @@
 namespace nckit {
 
 struct TimeSamples {
-    double period_s = 0;               //!< s between samples (the last one is the cycle's end)
-    std::vector<Axis> axes;            //!< the machine's axes, in X Y Z A B C U V W order
+    double period_s = 0;     //!< s between samples (the last one is the cycle's end)
+    std::vector<Axis> axes;  //!< the machine's axes, in X Y Z A B C U V W order
     std::vector<double> t_s;
     //! Per axis (index as `axes`), one value per sample: mm (deg), mm/s, mm/s², mm/s³.
     std::vector<std::vector<double>> position, velocity, acceleration, jerk;
-    std::vector<double> speed_mm_s;    //!< the tool's speed along X Y Z (path speed without XYZ)
+    std::vector<double> speed_mm_s;  //!< the tool's speed along X Y Z (path speed without XYZ)
 };
 
 class TimeSampler {

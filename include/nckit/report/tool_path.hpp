@@ -21,13 +21,13 @@ enum class ReportMoveKind : std::uint8_t { rapid, feed, arc, sync };
 //! One move of the program (a G0, G1, G2/G3 or G32/G33), in program order.
 struct ReportMove {
     ReportMoveKind kind = ReportMoveKind::feed;
-    std::uint32_t file = 0;        //!< index into ToolPathReport::files
-    std::uint32_t line = 0;        //!< 1-based source line of the block
-    double feed_mm_s = 0;          //!< programmed feed, mm/s (0 for rapids)
-    std::uint32_t vertex_end = 0;  //!< its polyline is vertices [previous move's vertex_end, vertex_end]
-    double start_s = 0;            //!< s, planned start
-    double end_s = 0;              //!< s, planned end (of its corner blend too)
-    double peak_mm_s = 0;          //!< planned top speed on the move, mm/s
+    std::uint32_t file = 0;              //!< index into ToolPathReport::files
+    std::uint32_t line = 0;              //!< 1-based source line of the block
+    double feed_mm_s = 0;                //!< programmed feed, mm/s (0 for rapids)
+    std::uint32_t vertex_end = 0;        //!< its polyline is vertices [previous move's vertex_end, vertex_end]
+    double start_s = 0;                  //!< s, planned start
+    double end_s = 0;                    //!< s, planned end (of its corner blend too)
+    double peak_mm_s = 0;                //!< planned top speed on the move, mm/s
     Slowdown slowdown = Slowdown::none;  //!< why the programmed feed was not reached
 };
 
@@ -42,16 +42,16 @@ struct ToolPathOptions {
     //! the planned path (and the speed within speed_tolerance of the fastest speed); a move's
     //! end point is never dropped, so every move stays a drawn segment with its line.
     double tolerance_mm = 0.01;
-    double speed_tolerance = 0.02;    //!< fraction of the top speed
-    double arc_step_deg = 5;          //!< at most this sweep between points of an arc
-    std::size_t max_samples = 8192;   //!< time samples kept: between this and twice this
+    double speed_tolerance = 0.02;   //!< fraction of the top speed
+    double arc_step_deg = 5;         //!< at most this sweep between points of an arc
+    std::size_t max_samples = 8192;  //!< time samples kept: between this and twice this
     //! The program's own file, listed first (before called programs) even if its first move
     //! comes from a called one; empty: files in the order their first moves come.
     std::string first_file;
 };
 
 struct ToolPathReport {
-    std::vector<std::string> files;   //!< program files, as the user named them
+    std::vector<std::string> files;  //!< program files, as the user named them
     std::vector<ReportMove> moves;
     std::vector<ReportVertex> vertices;  //!< vertex 0 is where the path starts
     TimeSamples samples;

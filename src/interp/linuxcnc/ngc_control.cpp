@@ -15,12 +15,18 @@ constexpr std::size_t max_call_levels = 10;  // LinuxCNC's INTERP_SUB_ROUTINE_LE
 
 std::string_view kind_name(OKind kind) {
     switch (kind) {
-        case OKind::sub: return "sub";
-        case OKind::do_: return "do";
-        case OKind::while_: return "while";
-        case OKind::repeat: return "repeat";
-        case OKind::if_: return "if";
-        default: return "label";
+        case OKind::sub:
+            return "sub";
+        case OKind::do_:
+            return "do";
+        case OKind::while_:
+            return "while";
+        case OKind::repeat:
+            return "repeat";
+        case OKind::if_:
+            return "if";
+        default:
+            return "label";
     }
 }
 
@@ -51,8 +57,8 @@ std::optional<Diagnostic> NgcRunner::save_label(const std::string& name) {
     if (auto it = labels_.find(name); it != labels_.end()) {
         const Label& seen = it->second;
         if (seen.file == *source().file() && seen.line == line_.location.line) return std::nullopt;
-        return fail(line_.oword.column, fmt::format("redefining {}: already defined at {}:{}", line_.oword.shown(),
-                                                    seen.file, seen.line));
+        return fail(line_.oword.column,
+                    fmt::format("redefining {}: already defined at {}:{}", line_.oword.shown(), seen.file, seen.line));
     }
     labels_[name] = Label{line_.oword.kind, *source().file(), line_offset_, line_.location.line, -1};
     return std::nullopt;
@@ -69,9 +75,9 @@ std::optional<Diagnostic> NgcRunner::check_label(const std::string& name, std::i
             return std::nullopt;
         }
     }
-    return fail(line_.oword.column, fmt::format("no matching {} for {}: that label is a '{}' at line {}",
-                                                kind_name(*kinds.begin()), label, kind_name(it->second.kind),
-                                                it->second.line));
+    return fail(line_.oword.column,
+                fmt::format("no matching {} for {}: that label is a '{}' at line {}", kind_name(*kinds.begin()), label,
+                            kind_name(it->second.kind), it->second.line));
 }
 
 std::optional<Diagnostic> NgcRunner::back_to(const std::string& name) {
@@ -95,8 +101,8 @@ std::optional<std::filesystem::path> NgcRunner::find_sub_file(const std::string&
 
 std::optional<Diagnostic> NgcRunner::call_sub(const std::string& name) {
     if (frames_.size() >= max_call_levels) {
-        return fail(line_.oword.column, fmt::format("too many nested subroutine calls (more than {})",
-                                                    max_call_levels - 1));
+        return fail(line_.oword.column,
+                    fmt::format("too many nested subroutine calls (more than {})", max_call_levels - 1));
     }
     std::vector<double> arguments;
     for (std::int32_t arg : line_.oword.args) {
@@ -149,7 +155,8 @@ std::optional<Diagnostic> NgcRunner::run_oword() {
             }
             if (frames_.size() > 1 && !skipping && frames_.back().sub != name) {
                 return fail(o.column, fmt::format("nested subroutine definition: {} sub found inside the called "
-                                                  "subroutine {}", o.shown(), frames_.back().sub));
+                                                  "subroutine {}",
+                                                  o.shown(), frames_.back().sub));
             }
             if (skipping_other) return std::nullopt;
             if (o.kind == OKind::bare) {
@@ -157,7 +164,8 @@ std::optional<Diagnostic> NgcRunner::run_oword() {
                 if (!skipping || !skipping_to_sub_) return std::nullopt;
                 if (!fanuc_search_) {
                     return fail(o.column, fmt::format("{} is a Fanuc-style sub: call it with M98 P{}, not with "
-                                                      "`call`", o.shown(), name));
+                                                      "`call`",
+                                                      o.shown(), name));
                 }
                 if (auto error = save_label(name)) return error;
                 skipping_o_.clear();
@@ -166,7 +174,8 @@ std::optional<Diagnostic> NgcRunner::run_oword() {
                 return std::nullopt;
             }
             if (skipping && fanuc_search_) {
-                return fail(o.column, fmt::format("{} sub is called with `{} call`, not with M98", o.shown(), o.shown()));
+                return fail(o.column,
+                            fmt::format("{} sub is called with `{} call`, not with M98", o.shown(), o.shown()));
             }
             if (skipping) {
                 // The forward search for a call's sub ends here: record it, run its body.
@@ -212,7 +221,8 @@ std::optional<Diagnostic> NgcRunner::run_oword() {
         case OKind::call:
             if (skipping) return std::nullopt;
             return call_sub(name);
-        default: break;
+        default:
+            break;
     }
     if (skipping_other || (skipping_to_sub_ && skipping)) return std::nullopt;
     auto here = [&](const Label& label) { return label.file == *source().file() && label.line == line_.location.line; };
@@ -327,7 +337,8 @@ std::optional<Diagnostic> NgcRunner::run_oword() {
             }
             return back_to(name);
         }
-        default: break;
+        default:
+            break;
     }
     return std::nullopt;
 }

@@ -24,7 +24,8 @@ public:
         if (error) return 0;
         const Node& node = line_.nodes[static_cast<std::size_t>(index)];
         switch (node.op) {
-            case Op::number: return node.value;
+            case Op::number:
+                return node.value;
             case Op::parameter: {
                 std::int64_t n = 0;
                 if (!number_of(node, n)) return 0;
@@ -44,9 +45,12 @@ public:
                 double number = std::round(param.a >= 0 ? eval(param.a) : param.value);
                 return number >= 1 && number <= static_cast<double>(max_parameter) ? 1.0 : 0.0;
             }
-            case Op::negate: return -eval(node.a);
-            case Op::function: return function(node);
-            default: return binary(node);
+            case Op::negate:
+                return -eval(node.a);
+            case Op::function:
+                return function(node);
+            default:
+                return binary(node);
         }
     }
 
@@ -83,7 +87,8 @@ private:
                     return 0;
                 }
                 return std::pow(l, r);
-            case Op::multiply: return l * r;
+            case Op::multiply:
+                return l * r;
             case Op::divide:
                 if (r == 0) {
                     fail(node.column, "attempt to divide by zero");
@@ -98,18 +103,30 @@ private:
                 double m = std::fmod(l, r);
                 return m < 0 ? m + std::abs(r) : m;
             }
-            case Op::add: return l + r;
-            case Op::subtract: return l - r;
-            case Op::eq: return std::abs(l - r) < tolerance_equal ? 1 : 0;
-            case Op::ne: return std::abs(l - r) >= tolerance_equal ? 1 : 0;
-            case Op::gt: return l > r ? 1 : 0;
-            case Op::ge: return (std::abs(l - r) < tolerance_equal || l >= r) ? 1 : 0;
-            case Op::lt: return l < r ? 1 : 0;
-            case Op::le: return (std::abs(l - r) < tolerance_equal || l <= r) ? 1 : 0;
-            case Op::logical_and: return (l == 0 || r == 0) ? 0 : 1;
-            case Op::logical_or: return (l != 0 || r != 0) ? 1 : 0;
-            case Op::logical_xor: return ((l == 0) != (r == 0)) ? 1 : 0;
-            default: break;
+            case Op::add:
+                return l + r;
+            case Op::subtract:
+                return l - r;
+            case Op::eq:
+                return std::abs(l - r) < tolerance_equal ? 1 : 0;
+            case Op::ne:
+                return std::abs(l - r) >= tolerance_equal ? 1 : 0;
+            case Op::gt:
+                return l > r ? 1 : 0;
+            case Op::ge:
+                return (std::abs(l - r) < tolerance_equal || l >= r) ? 1 : 0;
+            case Op::lt:
+                return l < r ? 1 : 0;
+            case Op::le:
+                return (std::abs(l - r) < tolerance_equal || l <= r) ? 1 : 0;
+            case Op::logical_and:
+                return (l == 0 || r == 0) ? 0 : 1;
+            case Op::logical_or:
+                return (l != 0 || r != 0) ? 1 : 0;
+            case Op::logical_xor:
+                return ((l == 0) != (r == 0)) ? 1 : 0;
+            default:
+                break;
         }
         fail(node.column, "bad expression");
         return 0;
@@ -120,27 +137,36 @@ private:
         double y = node.b >= 0 ? eval(node.b) : 0.0;
         if (error) return 0;
         switch (node.function) {
-            case Function::abs: return std::abs(x);
+            case Function::abs:
+                return std::abs(x);
             case Function::acos:
                 if (x < -1 || x > 1) fail(node.column, "argument to ACOS out of range");
                 return std::acos(x) * degrees_per_radian;
             case Function::asin:
                 if (x < -1 || x > 1) fail(node.column, "argument to ASIN out of range");
                 return std::asin(x) * degrees_per_radian;
-            case Function::atan: return std::atan2(x, y) * degrees_per_radian;
-            case Function::cos: return std::cos(x / degrees_per_radian);
-            case Function::exp: return std::exp(x);
-            case Function::fix: return std::floor(x);
-            case Function::fup: return std::ceil(x);
+            case Function::atan:
+                return std::atan2(x, y) * degrees_per_radian;
+            case Function::cos:
+                return std::cos(x / degrees_per_radian);
+            case Function::exp:
+                return std::exp(x);
+            case Function::fix:
+                return std::floor(x);
+            case Function::fup:
+                return std::ceil(x);
             case Function::ln:
                 if (x <= 0) fail(node.column, "attempt to take the natural log of zero or a negative number");
                 return x > 0 ? std::log(x) : 0;
-            case Function::round: return std::round(x);
-            case Function::sin: return std::sin(x / degrees_per_radian);
+            case Function::round:
+                return std::round(x);
+            case Function::sin:
+                return std::sin(x / degrees_per_radian);
             case Function::sqrt:
                 if (x < 0) fail(node.column, "attempt to take the square root of a negative number");
                 return x >= 0 ? std::sqrt(x) : 0;
-            case Function::tan: return std::tan(x / degrees_per_radian);
+            case Function::tan:
+                return std::tan(x / degrees_per_radian);
         }
         return 0;
     }

@@ -31,7 +31,8 @@ std::optional<InterpResult> NgcRunner::run_fanuc_sub_words(std::vector<Move>& pe
         if (call && w.letter == 'P') p = &w;
         if (call && w.letter == 'L') l = &w;
     }
-    if (call && p == nullptr) return InterpResult(fail(m_column, "M98 with no P word (the number of the O-word to call)"));
+    if (call && p == nullptr)
+        return InterpResult(fail(m_column, "M98 with no P word (the number of the O-word to call)"));
     const double number = call ? p->value : 0;
     const double repeats = call && l != nullptr ? l->value : 1;
     const std::uint32_t p_column = call ? p->column : 0;
@@ -40,8 +41,8 @@ std::optional<InterpResult> NgcRunner::run_fanuc_sub_words(std::vector<Move>& pe
         return InterpResult(fail(p_column, fmt::format("M98 P{} is no O-word number", number)));
     }
     if (call && (repeats < 0 || repeats != std::floor(repeats) || repeats > max_repeats)) {
-        return InterpResult(fail(l_column, fmt::format("M98 L{}: the repeat count is a whole number 0-{}", repeats,
-                                                       max_repeats)));
+        return InterpResult(
+            fail(l_column, fmt::format("M98 L{}: the repeat count is a whole number 0-{}", repeats, max_repeats)));
     }
     // The block's other words run first, as in LinuxCNC, which calls or returns last.
     std::erase_if(block_.words, [&](const Word& w) {
@@ -61,7 +62,8 @@ std::optional<InterpResult> NgcRunner::run_fanuc_sub_words(std::vector<Move>& pe
         Frame& frame = frames_.back();
         if (!frame.fanuc) {
             return InterpResult(fail(m_column, fmt::format("M99 inside o<{}> sub: a sub called by `call` ends with "
-                                                           "endsub or return", frame.sub)));
+                                                           "endsub or return",
+                                                           frame.sub)));
         }
         if (frame.repeats_left > 0) {
             --frame.repeats_left;
@@ -78,8 +80,8 @@ std::optional<InterpResult> NgcRunner::run_fanuc_sub_words(std::vector<Move>& pe
     }
     if (repeats == 0) return std::nullopt;
     if (frames_.size() >= max_call_levels) {
-        return InterpResult(fail(m_column, fmt::format("too many nested subroutine calls (more than {})",
-                                                       max_call_levels - 1)));
+        return InterpResult(
+            fail(m_column, fmt::format("too many nested subroutine calls (more than {})", max_call_levels - 1)));
     }
     const std::string name = fmt::format("{}", static_cast<std::int64_t>(number));
     Frame frame{name, *source().file(), source().next_offset(), source().next_line_number()};

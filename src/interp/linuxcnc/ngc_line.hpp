@@ -13,17 +13,27 @@
 namespace nckit::interp::ngc {
 
 enum class Op : std::uint8_t {
-    number,      //!< literal `value`
-    parameter,   //!< `#n` (n in `value`) or `#[expr]` / `##n` (index from child `a`)
-    named,       //!< `#<name>`: `name` indexes NgcLine::names
-    exists,      //!< `EXISTS[#<name>]`
+    number,     //!< literal `value`
+    parameter,  //!< `#n` (n in `value`) or `#[expr]` / `##n` (index from child `a`)
+    named,      //!< `#<name>`: `name` indexes NgcLine::names
+    exists,     //!< `EXISTS[#<name>]`
     negate,
-    power,       //!< `**`
-    multiply, divide, mod,
-    add, subtract,
-    eq, ne, gt, ge, lt, le,
-    logical_and, logical_or, logical_xor,
-    function     //!< `function` of a (ATAN of a and b)
+    power,  //!< `**`
+    multiply,
+    divide,
+    mod,
+    add,
+    subtract,
+    eq,
+    ne,
+    gt,
+    ge,
+    lt,
+    le,
+    logical_and,
+    logical_or,
+    logical_xor,
+    function  //!< `function` of a (ATAN of a and b)
 };
 
 enum class Function : std::uint8_t { abs, acos, asin, atan, cos, exp, fix, fup, ln, round, sin, sqrt, tan };
@@ -53,19 +63,33 @@ struct Setting {
 };
 
 enum class OKind : std::uint8_t {
-    none, sub, endsub, call, return_, do_, while_, endwhile, repeat, endrepeat, if_, elseif, else_, endif,
-    break_, continue_,
+    none,
+    sub,
+    endsub,
+    call,
+    return_,
+    do_,
+    while_,
+    endwhile,
+    repeat,
+    endrepeat,
+    if_,
+    elseif,
+    else_,
+    endif,
+    break_,
+    continue_,
     bare  //!< `O1000` alone: a Fanuc-style program number
 };
 
 struct OWord {
     OKind kind = OKind::none;
-    std::string label;              //!< `name` of o<name>, or the digits of o100
-    std::int32_t expr = -1;         //!< condition, repeat count or return value
-    std::int32_t label_expr = -1;   //!< o[expr] and o#1: the number, known when the line runs
-    std::vector<std::int32_t> args; //!< call arguments
+    std::string label;               //!< `name` of o<name>, or the digits of o100
+    std::int32_t expr = -1;          //!< condition, repeat count or return value
+    std::int32_t label_expr = -1;    //!< o[expr] and o#1: the number, known when the line runs
+    std::vector<std::int32_t> args;  //!< call arguments
     std::uint32_t column = 0;
-    bool named = false;             //!< o<name>, not o100
+    bool named = false;  //!< o<name>, not o100
 
     //! As written, for messages: `o<name>` or `o100`.
     [[nodiscard]] std::string shown() const { return named ? "o<" + label + ">" : "o" + label; }
@@ -82,10 +106,10 @@ struct Comment {
 struct NgcLine {
     SourceLocation location;
     bool block_delete = false;
-    bool percent = false;     //!< a `%` line
+    bool percent = false;  //!< a `%` line
     std::vector<Node> nodes;
     std::vector<std::string> names;
-    std::vector<NgcWord> words;   //!< N words are dropped
+    std::vector<NgcWord> words;  //!< N words are dropped
     std::vector<Setting> settings;
     OWord oword;
     std::vector<Comment> comments;

@@ -25,8 +25,8 @@ std::optional<double> NgcParameters::read_named(const std::string& name) const {
 bool NgcParameters::write_named(const std::string& name, double value) {
     if (!name.empty() && name[0] == '_') {
         // A predefined name is read-only; a global the program made is not.
-        if (!globals_.contains(name) && (name == "_value" || name == "_value_returned" ||
-                                         (live_.named && live_.named(name).has_value()))) {
+        if (!globals_.contains(name) &&
+            (name == "_value" || name == "_value_returned" || (live_.named && live_.named(name).has_value()))) {
             return false;
         }
         globals_[name] = value;

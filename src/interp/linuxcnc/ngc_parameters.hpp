@@ -25,7 +25,10 @@ public:
         std::function<std::optional<double>(const std::string&)> named;
     };
 
-    NgcParameters() { values_.fill(0.0); frames_.emplace_back(); }
+    NgcParameters() {
+        values_.fill(0.0);
+        frames_.emplace_back();
+    }
 
     void set_live(Live live) { live_ = std::move(live); }
     [[nodiscard]] bool in_range(std::int64_t n) const { return n >= 1 && n <= max_parameter; }

@@ -13,16 +13,34 @@ namespace nckit::interp::ngc {
 
 namespace {
 
-bool is_digit(char c) { return c >= '0' && c <= '9'; }
-bool is_lower(char c) { return c >= 'a' && c <= 'z'; }
-char lower(char c) { return (c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c; }
+bool is_digit(char c) {
+    return c >= '0' && c <= '9';
+}
+bool is_lower(char c) {
+    return c >= 'a' && c <= 'z';
+}
+char lower(char c) {
+    return (c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c;
+}
 
-struct FunctionName { std::string_view name; Function function; };
+struct FunctionName {
+    std::string_view name;
+    Function function;
+};
 // Longer names first where one starts another (asin before abs is not needed; exists apart).
 constexpr std::array<FunctionName, 13> functions{{
-    {"abs", Function::abs}, {"acos", Function::acos}, {"asin", Function::asin}, {"atan", Function::atan},
-    {"cos", Function::cos}, {"exp", Function::exp},   {"fix", Function::fix},   {"fup", Function::fup},
-    {"ln", Function::ln},   {"round", Function::round}, {"sin", Function::sin}, {"sqrt", Function::sqrt},
+    {"abs", Function::abs},
+    {"acos", Function::acos},
+    {"asin", Function::asin},
+    {"atan", Function::atan},
+    {"cos", Function::cos},
+    {"exp", Function::exp},
+    {"fix", Function::fix},
+    {"fup", Function::fup},
+    {"ln", Function::ln},
+    {"round", Function::round},
+    {"sin", Function::sin},
+    {"sqrt", Function::sqrt},
     {"tan", Function::tan},
 }};
 
@@ -32,19 +50,43 @@ struct BinaryOp {
     int precedence;  // LinuxCNC's: logic 2, comparison 3, + - 4, * / mod 5, ** 6
 };
 constexpr std::array<BinaryOp, 15> binary_ops{{
-    {"**", Op::power, 6},      {"*", Op::multiply, 5},   {"/", Op::divide, 5},     {"mod", Op::mod, 5},
-    {"+", Op::add, 4},         {"-", Op::subtract, 4},   {"eq", Op::eq, 3},        {"ne", Op::ne, 3},
-    {"gt", Op::gt, 3},         {"ge", Op::ge, 3},        {"lt", Op::lt, 3},        {"le", Op::le, 3},
-    {"and", Op::logical_and, 2}, {"or", Op::logical_or, 2}, {"xor", Op::logical_xor, 2},
+    {"**", Op::power, 6},
+    {"*", Op::multiply, 5},
+    {"/", Op::divide, 5},
+    {"mod", Op::mod, 5},
+    {"+", Op::add, 4},
+    {"-", Op::subtract, 4},
+    {"eq", Op::eq, 3},
+    {"ne", Op::ne, 3},
+    {"gt", Op::gt, 3},
+    {"ge", Op::ge, 3},
+    {"lt", Op::lt, 3},
+    {"le", Op::le, 3},
+    {"and", Op::logical_and, 2},
+    {"or", Op::logical_or, 2},
+    {"xor", Op::logical_xor, 2},
 }};
 
-struct OKeyword { std::string_view name; OKind kind; };
+struct OKeyword {
+    std::string_view name;
+    OKind kind;
+};
 constexpr std::array<OKeyword, 15> o_keywords{{
-    {"sub", OKind::sub},         {"endsub", OKind::endsub},       {"call", OKind::call},
-    {"return", OKind::return_},  {"do", OKind::do_},              {"while", OKind::while_},
-    {"endwhile", OKind::endwhile}, {"repeat", OKind::repeat},     {"endrepeat", OKind::endrepeat},
-    {"if", OKind::if_},          {"elseif", OKind::elseif},       {"else", OKind::else_},
-    {"endif", OKind::endif},     {"break", OKind::break_},        {"continue", OKind::continue_},
+    {"sub", OKind::sub},
+    {"endsub", OKind::endsub},
+    {"call", OKind::call},
+    {"return", OKind::return_},
+    {"do", OKind::do_},
+    {"while", OKind::while_},
+    {"endwhile", OKind::endwhile},
+    {"repeat", OKind::repeat},
+    {"endrepeat", OKind::endrepeat},
+    {"if", OKind::if_},
+    {"elseif", OKind::elseif},
+    {"else", OKind::else_},
+    {"endif", OKind::endif},
+    {"break", OKind::break_},
+    {"continue", OKind::continue_},
 }};
 
 class Reader {
@@ -138,9 +180,11 @@ private:
         for (std::size_t i = 0; i < body.size() && i < 8; ++i) {
             if (body[i] != ' ' && body[i] != '\t') head += lower(body[i]);
         }
-        static constexpr std::array<std::pair<std::string_view, CommentKind>, 4> kinds{{
-            {"msg,", CommentKind::msg}, {"debug,", CommentKind::debug},
-            {"print,", CommentKind::print}, {"abort,", CommentKind::abort}}};
+        static constexpr std::array<std::pair<std::string_view, CommentKind>, 4> kinds{
+            {{"msg,", CommentKind::msg},
+             {"debug,", CommentKind::debug},
+             {"print,", CommentKind::print},
+             {"abort,", CommentKind::abort}}};
         comment.text = std::string(body);
         for (const auto& [prefix, kind] : kinds) {
             if (head.starts_with(prefix)) {
@@ -213,7 +257,8 @@ private:
                     if (auto e = expression(o.expr)) return e;
                 }
                 break;
-            default: break;
+            default:
+                break;
         }
         if (pos_ < buffer_.size()) return error(column(), "unexpected character after O-word");
         return std::nullopt;
@@ -326,7 +371,8 @@ private:
             std::int32_t b = -1;
             if (auto e = expression(a)) return e;
             if (f.function == Function::atan) {
-                if (peek() != '/' || peek(1) != '[') return error(column(), "ATAN needs a second argument: ATAN[y]/[x]");
+                if (peek() != '/' || peek(1) != '[')
+                    return error(column(), "ATAN needs a second argument: ATAN[y]/[x]");
                 ++pos_;
                 if (auto e = expression(b)) return e;
             }

@@ -43,7 +43,7 @@ private:
     };
     //! One level of O-word calls; [0] is the main program.
     struct Frame {
-        std::string sub;              //!< the called sub's label; empty for the main program
+        std::string sub;  //!< the called sub's label; empty for the main program
         std::string return_file;
         std::uint64_t return_offset = 0;
         std::uint32_t return_line = 0;
@@ -105,8 +105,8 @@ private:
     std::uint64_t main_offset_ = 0;
     std::int64_t counted_lines_ = 0;
     std::set<std::int64_t> in_file_;  //!< numbers the parameter file had: written back
-    bool repeating_ = false;  //!< a loop or call has run: lines count against the budget
-    SourceLocation call_location_;  //!< the call a forward search for its sub started from
+    bool repeating_ = false;          //!< a loop or call has run: lines count against the budget
+    SourceLocation call_location_;    //!< the call a forward search for its sub started from
 
     // LinuxCNC's skipping state.
     std::string skipping_o_;        //!< skipping forward to this label; empty: not skipping

@@ -18,21 +18,23 @@ namespace {
 constexpr std::string_view axis_letters = "XYZABCUVW";  // LinuxCNC's parameter order
 constexpr std::int64_t work_offset_base = 5221;         // G54 X; 20 per system
 constexpr std::int64_t work_offset_stride = 20;
-constexpr std::int64_t fanuc_systems = 6;               // G54-G59; G59.1-G59.3 are kept as values
+constexpr std::int64_t fanuc_systems = 6;  // G54-G59; G59.1-G59.3 are kept as values
 
 //! Parameters LinuxCNC always writes to its file, whether or not the file had them.
 bool required_in_file(std::int64_t n) {
-    if (n >= 5161 && n <= 5166) return true;  // G28
-    if (n >= 5181 && n <= 5186) return true;  // G30
-    if (n >= 5210 && n <= 5216) return true;  // G92: applied, X-C
-    if (n == 5220) return true;               // coordinate system
+    if (n >= 5161 && n <= 5166) return true;                 // G28
+    if (n >= 5181 && n <= 5186) return true;                 // G30
+    if (n >= 5210 && n <= 5216) return true;                 // G92: applied, X-C
+    if (n == 5220) return true;                              // coordinate system
     if (n >= 5221 && n <= 5386) return (n - 5221) % 20 < 6;  // G54-G59.3 X Y Z A B C
     return false;
 }
 
 }  // namespace
 
-double NgcRunner::to_program_units(double mm) const { return mm / executor_.modal_view().length_factor_mm; }
+double NgcRunner::to_program_units(double mm) const {
+    return mm / executor_.modal_view().length_factor_mm;
+}
 
 std::optional<double> NgcRunner::axis_position(char letter) const {
     for (std::size_t i = 0; i < machine_.axes.size(); ++i) {
@@ -135,8 +137,8 @@ std::string NgcRunner::substitute_parameters(const std::string& text) const {
                 ++i;
                 continue;
             }
-            if (f == '.' && i + 3 < text.size() + 1 && i + 2 < text.size() && std::isdigit(static_cast<unsigned char>(text[i + 2])) &&
-                i + 3 < text.size() && text[i + 3] == 'f') {
+            if (f == '.' && i + 3 < text.size() + 1 && i + 2 < text.size() &&
+                std::isdigit(static_cast<unsigned char>(text[i + 2])) && i + 3 < text.size() && text[i + 3] == 'f') {
                 format = fmt::format("{{:.{}f}}", text[i + 2]);
                 i += 3;
                 continue;

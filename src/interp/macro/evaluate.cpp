@@ -24,11 +24,16 @@ public:
     MacroValue eval(std::int32_t index) {
         const ExprNode& node = block_.exprs[static_cast<std::size_t>(index)];
         switch (node.op) {
-            case ExprOp::number: return MacroValue::of(node.value);
-            case ExprOp::variable: return read(index);
-            case ExprOp::negate: return MacroValue::of(-eval(node.a).or_zero());
-            case ExprOp::function: return function(node);
-            default: return binary(node);
+            case ExprOp::number:
+                return MacroValue::of(node.value);
+            case ExprOp::variable:
+                return read(index);
+            case ExprOp::negate:
+                return MacroValue::of(-eval(node.a).or_zero());
+            case ExprOp::function:
+                return function(node);
+            default:
+                return binary(node);
         }
     }
 
@@ -96,9 +101,12 @@ private:
                     return {};
                 }
                 return MacroValue::of(static_cast<double>(a % b));
-            case ExprOp::bit_and: return MacroValue::of(static_cast<double>(a & b));
-            case ExprOp::bit_or: return MacroValue::of(static_cast<double>(a | b));
-            default: return MacroValue::of(static_cast<double>(a ^ b));
+            case ExprOp::bit_and:
+                return MacroValue::of(static_cast<double>(a & b));
+            case ExprOp::bit_or:
+                return MacroValue::of(static_cast<double>(a | b));
+            default:
+                return MacroValue::of(static_cast<double>(a ^ b));
         }
     }
 
@@ -110,9 +118,12 @@ private:
         double r = right.or_zero();
         auto truth = [](bool b) { return MacroValue::of(b ? 1.0 : 0.0); };
         switch (node.op) {
-            case ExprOp::add: return MacroValue::of(l + r);
-            case ExprOp::subtract: return MacroValue::of(l - r);
-            case ExprOp::multiply: return MacroValue::of(l * r);
+            case ExprOp::add:
+                return MacroValue::of(l + r);
+            case ExprOp::subtract:
+                return MacroValue::of(l - r);
+            case ExprOp::multiply:
+                return MacroValue::of(l * r);
             case ExprOp::divide:
                 if (r == 0) {
                     fail(node.column, alarm::division_by_zero, "division by zero");
@@ -122,17 +133,23 @@ private:
             case ExprOp::mod:
             case ExprOp::bit_and:
             case ExprOp::bit_or:
-            case ExprOp::bit_xor: return integer_operation(node, l, r);
+            case ExprOp::bit_xor:
+                return integer_operation(node, l, r);
             // EQ and NE tell vacant from 0; the ordering comparisons read vacant as 0.
             case ExprOp::eq:
                 return truth(left.vacant || right.vacant ? left.vacant == right.vacant : near(l, r));
             case ExprOp::ne:
                 return truth(left.vacant || right.vacant ? left.vacant != right.vacant : !near(l, r));
-            case ExprOp::gt: return truth(l > r && !near(l, r));
-            case ExprOp::ge: return truth(l > r || near(l, r));
-            case ExprOp::lt: return truth(l < r && !near(l, r));
-            case ExprOp::le: return truth(l < r || near(l, r));
-            default: break;
+            case ExprOp::gt:
+                return truth(l > r && !near(l, r));
+            case ExprOp::ge:
+                return truth(l > r || near(l, r));
+            case ExprOp::lt:
+                return truth(l < r && !near(l, r));
+            case ExprOp::le:
+                return truth(l < r || near(l, r));
+            default:
+                break;
         }
         fail(node.column, alarm::format, "bad expression");
         return {};
@@ -147,8 +164,10 @@ private:
             return MacroValue{};
         };
         switch (node.function) {
-            case ExprFunction::sin: return MacroValue::of(std::sin(x / degrees_per_radian));
-            case ExprFunction::cos: return MacroValue::of(std::cos(x / degrees_per_radian));
+            case ExprFunction::sin:
+                return MacroValue::of(std::sin(x / degrees_per_radian));
+            case ExprFunction::cos:
+                return MacroValue::of(std::cos(x / degrees_per_radian));
             case ExprFunction::tan: {
                 double c = std::cos(x / degrees_per_radian);
                 if (std::abs(c) < 1e-15) return out_of_range("TAN of an odd multiple of 90 degrees");
@@ -169,10 +188,14 @@ private:
             case ExprFunction::sqrt:
                 if (x < 0) return out_of_range("SQRT of a negative number");
                 return MacroValue::of(std::sqrt(x));
-            case ExprFunction::abs: return MacroValue::of(std::abs(x));
-            case ExprFunction::round: return MacroValue::of(round_half_away(x));
-            case ExprFunction::fix: return MacroValue::of(std::trunc(x));
-            case ExprFunction::fup: return MacroValue::of(x < 0 ? std::floor(x) : std::ceil(x));
+            case ExprFunction::abs:
+                return MacroValue::of(std::abs(x));
+            case ExprFunction::round:
+                return MacroValue::of(round_half_away(x));
+            case ExprFunction::fix:
+                return MacroValue::of(std::trunc(x));
+            case ExprFunction::fup:
+                return MacroValue::of(x < 0 ? std::floor(x) : std::ceil(x));
             case ExprFunction::ln:
                 if (x <= 0) return out_of_range("LN of zero or a negative number");
                 return MacroValue::of(std::log(x));
@@ -188,8 +211,10 @@ private:
             }
             case ExprFunction::adp:
                 return MacroValue::of(settings_.least_increment_input ? x * 1000.0 : x);
-            case ExprFunction::bin: return bin(x, node);
-            case ExprFunction::bcd: return bcd(x, node);
+            case ExprFunction::bin:
+                return bin(x, node);
+            case ExprFunction::bcd:
+                return bcd(x, node);
         }
         return {};
     }
@@ -234,7 +259,9 @@ private:
 
 }  // namespace
 
-double round_half_away(double value) { return std::round(value); }
+double round_half_away(double value) {
+    return std::round(value);
+}
 
 std::optional<Diagnostic> evaluate(const Block& block, std::int32_t root, const Variables& variables,
                                    const EvalSettings& settings, MacroValue& out) {

@@ -20,14 +20,13 @@ struct EvalSettings {
 };
 
 //! The value of the expression rooted at `root`, or an alarm at its column.
-[[nodiscard]] std::optional<Diagnostic> evaluate(const Block& block, std::int32_t root,
-                                                 const Variables& variables, const EvalSettings& settings,
-                                                 MacroValue& out);
+[[nodiscard]] std::optional<Diagnostic> evaluate(const Block& block, std::int32_t root, const Variables& variables,
+                                                 const EvalSettings& settings, MacroValue& out);
 
 //! The variable number a variable node names (`#5` or `#[#1+2]`), or an alarm.
 [[nodiscard]] std::optional<Diagnostic> variable_number(const Block& block, std::int32_t node,
-                                                        const Variables& variables,
-                                                        const EvalSettings& settings, std::int64_t& out);
+                                                        const Variables& variables, const EvalSettings& settings,
+                                                        std::int64_t& out);
 
 //! Rounds half away from zero, as Fanuc's ROUND and address rounding do.
 [[nodiscard]] double round_half_away(double value);

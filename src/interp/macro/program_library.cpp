@@ -46,9 +46,13 @@ std::optional<std::int64_t> number_of_file(const std::filesystem::path& path) {
 
 }  // namespace
 
-std::optional<std::int64_t> program_number_of(std::string_view line) { return lettered_number(line, 'O', false); }
+std::optional<std::int64_t> program_number_of(std::string_view line) {
+    return lettered_number(line, 'O', false);
+}
 
-std::optional<std::int64_t> sequence_number_of(std::string_view line) { return lettered_number(line, 'N', true); }
+std::optional<std::int64_t> sequence_number_of(std::string_view line) {
+    return lettered_number(line, 'N', true);
+}
 
 ProgramLibrary::ProgramLibrary(std::filesystem::path library_dir) : library_dir_(std::move(library_dir)) {}
 

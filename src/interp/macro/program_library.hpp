@@ -15,9 +15,9 @@
 namespace nckit::interp {
 
 struct ProgramLocation {
-    std::string file;            //!< path (or the name of a program given as text)
-    bool in_main_file = false;   //!< read with a second reader of the main program
-    std::uint64_t offset = 0;    //!< the O line, or 0 for a library file
+    std::string file;           //!< path (or the name of a program given as text)
+    bool in_main_file = false;  //!< read with a second reader of the main program
+    std::uint64_t offset = 0;   //!< the O line, or 0 for a library file
     std::uint32_t line = 1;
 };
 

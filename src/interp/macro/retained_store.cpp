@@ -47,7 +47,8 @@ Result<RetainedValues> load_retained(const std::filesystem::path& path) {
             variable > last_retained) {
             return bad(fmt::format("'{}' is not a retained variable (#500 to #999)", name));
         }
-        auto [value_end, value_error] = std::from_chars(value_text.data(), value_text.data() + value_text.size(), value);
+        auto [value_end, value_error] =
+            std::from_chars(value_text.data(), value_text.data() + value_text.size(), value);
         // from_chars also reads "nan" and "inf", which no macro variable can hold.
         bool whole_text = value_end == value_text.data() + value_text.size();
         if (value_error != std::errc{} || !whole_text || !std::isfinite(value)) {
@@ -61,7 +62,8 @@ Result<RetainedValues> load_retained(const std::filesystem::path& path) {
 std::optional<Diagnostic> save_retained(const std::filesystem::path& path, const RetainedValues& values) {
     std::string text = "; nckit retained macro variables #500-#999 (vacant ones are left out)\n";
     for (std::size_t i = 0; i < values.size(); ++i) {
-        if (!values[i].vacant) text += fmt::format("#{} = {}\n", first_retained + static_cast<int>(i), values[i].number);
+        if (!values[i].vacant)
+            text += fmt::format("#{} = {}\n", first_retained + static_cast<int>(i), values[i].number);
     }
     // Written as FILE.partial, fsync'd and renamed: a crash leaves the old or the new file.
     if (auto error = write_file_atomically(path, text)) {

@@ -13,7 +13,6 @@ namespace nckit::interp {
 [[nodiscard]] Result<RetainedValues> load_retained(const std::filesystem::path& path);
 
 //! Writes `values` to `path` through a temporary file, fsync and rename.
-[[nodiscard]] std::optional<Diagnostic> save_retained(const std::filesystem::path& path,
-                                                      const RetainedValues& values);
+[[nodiscard]] std::optional<Diagnostic> save_retained(const std::filesystem::path& path, const RetainedValues& values);
 
 }  // namespace nckit::interp

@@ -13,16 +13,24 @@ VariableKind variable_kind(std::int64_t number) {
     return VariableKind::illegal;
 }
 
-Variables::Variables() { locals_.emplace_back(); }
+Variables::Variables() {
+    locals_.emplace_back();
+}
 
 std::optional<MacroValue> Variables::read(std::int64_t number) const {
     switch (variable_kind(number)) {
-        case VariableKind::null: return MacroValue{};
-        case VariableKind::local: return locals_.back()[static_cast<std::size_t>(number)];
-        case VariableKind::common: return common_[static_cast<std::size_t>(number - 100)];
-        case VariableKind::retained: return retained_[static_cast<std::size_t>(number - first_retained)];
-        case VariableKind::system: return system_ != nullptr ? system_->read_system(number) : std::nullopt;
-        case VariableKind::illegal: return std::nullopt;
+        case VariableKind::null:
+            return MacroValue{};
+        case VariableKind::local:
+            return locals_.back()[static_cast<std::size_t>(number)];
+        case VariableKind::common:
+            return common_[static_cast<std::size_t>(number - 100)];
+        case VariableKind::retained:
+            return retained_[static_cast<std::size_t>(number - first_retained)];
+        case VariableKind::system:
+            return system_ != nullptr ? system_->read_system(number) : std::nullopt;
+        case VariableKind::illegal:
+            return std::nullopt;
     }
     return std::nullopt;
 }
@@ -49,7 +57,8 @@ std::optional<Variables::WriteError> Variables::write(std::int64_t number, Macro
             if (auto e = system_->write_system(number, value.number)) return WriteError{e->alarm, e->message};
             return std::nullopt;
         }
-        case VariableKind::illegal: break;
+        case VariableKind::illegal:
+            break;
     }
     return WriteError{alarm::illegal_variable, "illegal variable number"};
 }

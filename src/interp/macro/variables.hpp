@@ -62,7 +62,7 @@ public:
     [[nodiscard]] std::size_t local_levels() const { return locals_.size(); }
 
 private:
-    std::vector<Locals> locals_;  // back() is the running level; level 0 is the main program
+    std::vector<Locals> locals_;            // back() is the running level; level 0 is the main program
     std::array<MacroValue, 400> common_{};  // #100..#499
     RetainedValues retained_{};
     bool retained_changed_ = false;

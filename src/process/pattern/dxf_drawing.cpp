@@ -105,7 +105,8 @@ private:
             const double offset = radius * std::cos(theta / 2.0) * (b > 0 ? 1.0 : -1.0);
             const Vec2 centre = mid + offset * left;
             const Vec2 r = p - centre;
-            drawing.curves.emplace_back(ArcCurve{centre, radius, std::atan2(r.y, r.x) * rad_to_deg, theta * rad_to_deg});
+            drawing.curves.emplace_back(
+                ArcCurve{centre, radius, std::atan2(r.y, r.x) * rad_to_deg, theta * rad_to_deg});
         }
     }
 

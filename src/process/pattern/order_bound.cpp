@@ -38,7 +38,9 @@ OrderBound air_cost_lower_bound(const std::vector<CutEnds>& cuts, Vec2 home,
             }
         }
     }
-    auto cost = [&](std::size_t a, std::size_t b) { return matrix ? static_cast<double>(w[a * n + b]) : weight(at[a], at[b]); };
+    auto cost = [&](std::size_t a, std::size_t b) {
+        return matrix ? static_cast<double>(w[a * n + b]) : weight(at[a], at[b]);
+    };
     std::vector<double> pi(n, 0.0);
     std::vector<int> degree(n);
     std::vector<double> key(n);

@@ -12,10 +12,10 @@ namespace nckit::pattern {
 
 namespace {
 
-using detail::ConfigSink;
-using detail::Need;
-using detail::Sign;
-using detail::TableReader;
+using core_detail::ConfigSink;
+using core_detail::Need;
+using core_detail::Sign;
+using core_detail::TableReader;
 
 constexpr std::size_t max_motif_curves = 10000;
 
@@ -31,7 +31,7 @@ std::optional<std::vector<double>> numbers(const toml::node& node, std::size_t c
     }
     std::vector<double> out;
     for (const toml::node& item : *array) {
-        std::optional<double> v = detail::to_number(item, what, Sign::any, sink);
+        std::optional<double> v = core_detail::to_number(item, what, Sign::any, sink);
         if (!v) return std::nullopt;
         out.push_back(*v);
     }
@@ -82,7 +82,8 @@ void read_motif(TableReader& reader, PatternJob& job, ConfigSink& sink, const st
             auto v = numbers(arc, 5, "a motif arc [cx, cy, radius, start_deg, sweep_deg]", sink);
             if (!v) continue;
             if ((*v)[2] <= 0 || (*v)[4] == 0 || std::abs((*v)[4]) > 360) {
-                sink.error(arc.source(), "config-value", "an arc needs a positive radius and a sweep of 0 < |sweep| <= 360 deg");
+                sink.error(arc.source(), "config-value",
+                           "an arc needs a positive radius and a sweep of 0 < |sweep| <= 360 deg");
                 continue;
             }
             job.motif.emplace_back(ArcCurve{{(*v)[0], (*v)[1]}, (*v)[2], (*v)[3], (*v)[4]});
@@ -210,7 +211,7 @@ void read_series(TableReader& reader, PatternJob& job, ConfigSink& sink) {
     reader.reject_unknown_keys();
 }
 
-Result<PatternJob> read_job(const detail::TomlFile& file, const std::filesystem::path& folder) {
+Result<PatternJob> read_job(const core_detail::TomlFile& file, const std::filesystem::path& folder) {
     ConfigSink sink{file.name, {}};
     PatternJob job;
     job.file = file.name;
@@ -234,7 +235,7 @@ Result<PatternJob> read_job(const detail::TomlFile& file, const std::filesystem:
     }
     root.reject_unknown_keys();
     if (!sink.diagnostics.empty()) {
-        detail::sort_by_position(sink.diagnostics);
+        core_detail::sort_by_position(sink.diagnostics);
         return std::move(sink.diagnostics);
     }
     return job;
@@ -243,13 +244,13 @@ Result<PatternJob> read_job(const detail::TomlFile& file, const std::filesystem:
 }  // namespace
 
 Result<PatternJob> parse_pattern_job(std::string_view toml_text, const std::string& file_name) {
-    Result<detail::TomlFile> file = detail::parse_toml_text(toml_text, file_name);
+    Result<core_detail::TomlFile> file = core_detail::parse_toml_text(toml_text, file_name);
     if (!file) return file.diagnostics();
     return read_job(*file, std::filesystem::path(file_name).parent_path());
 }
 
 Result<PatternJob> load_pattern_job(const std::filesystem::path& path) {
-    Result<detail::TomlFile> file = detail::load_toml_file(path, "pattern job");
+    Result<core_detail::TomlFile> file = core_detail::load_toml_file(path, "pattern job");
     if (!file) return file.diagnostics();
     return read_job(*file, path.parent_path());
 }

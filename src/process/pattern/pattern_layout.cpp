@@ -62,7 +62,8 @@ void add_cuts(const ClippedCurve& piece, const PatternJob& job, const Box& outli
               const Affine& to_program, std::vector<Cut>& out) {
     std::vector<double> lines;
     for (const DepthRegion& r : job.regions) {
-        for (double pct : {r.from_pct, r.to_pct}) lines.push_back(outline_box.low.x + pct / 100.0 * outline_box.size().x);
+        for (double pct : {r.from_pct, r.to_pct})
+            lines.push_back(outline_box.low.x + pct / 100.0 * outline_box.size().x);
     }
     const double end = parameter_end(piece.curve);
     std::vector<double> bounds{0.0};
@@ -76,8 +77,8 @@ void add_cuts(const ClippedCurve& piece, const PatternJob& job, const Box& outli
     for (std::size_t k = 0; k + 1 < bounds.size(); ++k) {
         const PlaneCurve part = bounds.size() == 2 ? piece.curve : sub_curve(piece.curve, bounds[k], bounds[k + 1]);
         const Vec2 mid = point_at(part, 0.5 * parameter_end(part));
-        out.push_back(Cut{transformed(part, to_program), depth_at(job, outline_box, mid), k == 0 && piece.start_on_border,
-                          k + 2 == bounds.size() && piece.end_on_border});
+        out.push_back(Cut{transformed(part, to_program), depth_at(job, outline_box, mid),
+                          k == 0 && piece.start_on_border, k + 2 == bounds.size() && piece.end_on_border});
     }
 }
 
@@ -151,7 +152,8 @@ Result<SoleLayout> lay_out_sole(const PatternJob& job, const OutlinePoints& poin
     if (motif_size.x > border_size.x || motif_size.y > border_size.y) {
         return error_at(job.motif_at, "motif-size",
                         fmt::format("the motif ({:.3f} x {:.3f} mm) is larger than the sole inside its border "
-                                    "({:.3f} x {:.3f} mm)", motif_size.x, motif_size.y, border_size.x, border_size.y));
+                                    "({:.3f} x {:.3f} mm)",
+                                    motif_size.x, motif_size.y, border_size.x, border_size.y));
     }
     // Lattice vectors in the base frame, then graded with the sole when motifs scale.
     const double ca = std::cos(job.lattice_angle_deg * deg), sa = std::sin(job.lattice_angle_deg * deg);
@@ -169,12 +171,14 @@ Result<SoleLayout> lay_out_sole(const PatternJob& job, const OutlinePoints& poin
 
     // Places whose motif can reach the border's box: invert the lattice basis at the corners of
     // the box grown by the motif's extent.
-    const Box mb = bounding_box(PlaneCurve(Segment{motif_map.apply(job.motif_box.low), motif_map.apply(job.motif_box.high)}));
+    const Box mb =
+        bounding_box(PlaneCurve(Segment{motif_map.apply(job.motif_box.low), motif_map.apply(job.motif_box.high)}));
     const Box& bb = clip.box();
     const double det = cross(a, b);
     double i_lo = 1e300, i_hi = -1e300, j_lo = 1e300, j_hi = -1e300;
-    for (Vec2 corner : {Vec2{bb.low.x - mb.high.x, bb.low.y - mb.high.y}, Vec2{bb.high.x - mb.low.x, bb.low.y - mb.high.y},
-                        Vec2{bb.low.x - mb.high.x, bb.high.y - mb.low.y}, Vec2{bb.high.x - mb.low.x, bb.high.y - mb.low.y}}) {
+    for (Vec2 corner :
+         {Vec2{bb.low.x - mb.high.x, bb.low.y - mb.high.y}, Vec2{bb.high.x - mb.low.x, bb.low.y - mb.high.y},
+          Vec2{bb.low.x - mb.high.x, bb.high.y - mb.low.y}, Vec2{bb.high.x - mb.low.x, bb.high.y - mb.low.y}}) {
         const Vec2 d = corner - origin;
         const double i = cross(d, b) / det, j = cross(a, d) / det;
         i_lo = std::min(i_lo, i);
@@ -186,7 +190,8 @@ Result<SoleLayout> lay_out_sole(const PatternJob& job, const OutlinePoints& poin
     if (!(places <= max_lattice_places)) {
         return error_at(job.lattice_at, "lattice-size",
                         fmt::format("the lattice puts {:.0f} motifs on the sole (at most {:.0f}): the spacing is too "
-                                    "small for this outline", places, max_lattice_places));
+                                    "small for this outline",
+                                    places, max_lattice_places));
     }
     const Affine to_program{{1, 0, 0, 1}, {-job.reference_hole_mm.x, -job.reference_hole_mm.y}};
     const Box graded_box = graded.box;

@@ -11,7 +11,9 @@ namespace nckit::pattern {
 
 namespace {
 
-double grid(double v, double spu) { return spu > 0 ? std::round(v * spu) / spu : v; }
+double grid(double v, double spu) {
+    return spu > 0 ? std::round(v * spu) / spu : v;
+}
 
 std::string f4(double v) {
     std::string s;

@@ -67,12 +67,13 @@ Result<SoleRun> run_pattern_sole(const PatternJob& job, const OutlinePoints& poi
     run.drawing = as_cut(drawn);
     run.optimised = as_cut(run.tour);
     run.bound_distance_mm =
-        air_cost_lower_bound(run.ends, costs.home, [](Vec2 a, Vec2 b) { return norm(b - a); }, run.optimised.air_distance_mm)
+        air_cost_lower_bound(
+            run.ends, costs.home, [](Vec2 a, Vec2 b) { return norm(b - a); }, run.optimised.air_distance_mm)
             .value;
-    run.bound_time_s = air_cost_lower_bound(
-                           run.ends, costs.home, [&](Vec2 a, Vec2 b) { return costs.timer.rapid_s(b - a); },
-                           run.optimised.air_time_s)
-                           .value;
+    run.bound_time_s =
+        air_cost_lower_bound(
+            run.ends, costs.home, [&](Vec2 a, Vec2 b) { return costs.timer.rapid_s(b - a); }, run.optimised.air_time_s)
+            .value;
     // The rapids in Z: up from the surface once, then per groove up from its depth and down to
     // the approach height.
     run.z_air_time_s = costs.timer.rapid_s(0, 0, job.clearance_mm);

@@ -47,7 +47,7 @@ std::string pattern_svg(const SoleRun& run, const PatternJob& job, const std::st
     f.box.add({0, 0});
     const double width_px = f.box.size().x * px_per_mm + 2 * margin_px;
     f.height_px = f.box.size().y * px_per_mm + 2 * margin_px + 20;
-    std::string out = detail::svg_open(width_px, f.height_px);
+    std::string out = process_detail::svg_open(width_px, f.height_px);
     out += fmt::format("<text x=\"{:.0f}\" y=\"16\">{}</text>\n", margin_px, title);
     out += fmt::format("<path d=\"{}\" fill=\"none\" stroke=\"black\" stroke-width=\"1.5\"/>\n",
                        path_of(f, polyline(PlaneCurve(run.layout.outline), 0.02), true));
@@ -66,9 +66,10 @@ std::string pattern_svg(const SoleRun& run, const PatternJob& job, const std::st
                        air);
     const double groove_px = std::max(1.0, job.tool_diameter_mm * px_per_mm);
     for (std::size_t i = 0; i < run.program_cuts.size(); ++i) {
-        out += fmt::format("<path d=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"{:.2f}\" stroke-linecap=\"round\"/>\n",
-                           path_of(f, polyline(run.program_cuts[i].curve, 0.02), false),
-                           order_colour(i, run.program_cuts.size()), groove_px);
+        out += fmt::format(
+            "<path d=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"{:.2f}\" stroke-linecap=\"round\"/>\n",
+            path_of(f, polyline(run.program_cuts[i].curve, 0.02), false), order_colour(i, run.program_cuts.size()),
+            groove_px);
     }
     const std::string hole = f.xy({0, 0});
     const auto comma = hole.find(',');

@@ -48,10 +48,10 @@ CubicPiece flip(const CubicPiece& p) {
 }  // namespace
 
 double parameter_end(const PlaneCurve& curve) {
-    return std::visit(Overload{[](const Segment&) { return 1.0; },
-                               [](const ArcCurve& a) { return std::abs(a.sweep_deg); },
-                               [](const CubicPath& p) { return static_cast<double>(p.pieces.size()); }},
-                      curve);
+    return std::visit(
+        Overload{[](const Segment&) { return 1.0; }, [](const ArcCurve& a) { return std::abs(a.sweep_deg); },
+                 [](const CubicPath& p) { return static_cast<double>(p.pieces.size()); }},
+        curve);
 }
 
 Vec2 point_at(const PlaneCurve& curve, double s) {
@@ -82,31 +82,35 @@ Vec2 tangent_at(const PlaneCurve& curve, double s) {
 }
 
 PlaneCurve sub_curve(const PlaneCurve& curve, double s0, double s1) {
-    return std::visit(
-        Overload{[&](const Segment&) -> PlaneCurve { return Segment{point_at(curve, s0), point_at(curve, s1)}; },
-                 [&](const ArcCurve& a) -> PlaneCurve {
-                     const double sign = a.sweep_deg < 0 ? -1.0 : 1.0;
-                     return ArcCurve{a.center, a.radius_mm, a.start_deg + sign * s0, sign * (s1 - s0)};
-                 },
-                 [&](const CubicPath& p) -> PlaneCurve {
-                     CubicPath out;
-                     const auto n = static_cast<double>(p.pieces.size());
-                     s0 = std::clamp(s0, 0.0, n);
-                     s1 = std::clamp(s1, s0, n);
-                     auto first = static_cast<std::size_t>(std::min(std::floor(s0), n - 1));
-                     for (std::size_t i = first; i < p.pieces.size() && static_cast<double>(i) < s1; ++i) {
-                         const double u0 = std::max(0.0, s0 - static_cast<double>(i));
-                         const double u1 = std::min(1.0, s1 - static_cast<double>(i));
-                         if (u1 - u0 <= 1e-15 && !out.pieces.empty()) continue;
-                         out.pieces.push_back(restrict(p.pieces[i], u0, u1));
-                     }
-                     return out;
-                 }},
-        curve);
+    return std::visit(Overload{[&](const Segment&) -> PlaneCurve {
+                                   return Segment{point_at(curve, s0), point_at(curve, s1)};
+                               },
+                               [&](const ArcCurve& a) -> PlaneCurve {
+                                   const double sign = a.sweep_deg < 0 ? -1.0 : 1.0;
+                                   return ArcCurve{a.center, a.radius_mm, a.start_deg + sign * s0, sign * (s1 - s0)};
+                               },
+                               [&](const CubicPath& p) -> PlaneCurve {
+                                   CubicPath out;
+                                   const auto n = static_cast<double>(p.pieces.size());
+                                   s0 = std::clamp(s0, 0.0, n);
+                                   s1 = std::clamp(s1, s0, n);
+                                   auto first = static_cast<std::size_t>(std::min(std::floor(s0), n - 1));
+                                   for (std::size_t i = first; i < p.pieces.size() && static_cast<double>(i) < s1;
+                                        ++i) {
+                                       const double u0 = std::max(0.0, s0 - static_cast<double>(i));
+                                       const double u1 = std::min(1.0, s1 - static_cast<double>(i));
+                                       if (u1 - u0 <= 1e-15 && !out.pieces.empty()) continue;
+                                       out.pieces.push_back(restrict(p.pieces[i], u0, u1));
+                                   }
+                                   return out;
+                               }},
+                      curve);
 }
 
 PlaneCurve reversed(const PlaneCurve& curve) {
-    return std::visit(Overload{[](const Segment& l) -> PlaneCurve { return Segment{l.to, l.from}; },
+    return std::visit(Overload{[](const Segment& l) -> PlaneCurve {
+                                   return Segment{l.to, l.from};
+                               },
                                [](const ArcCurve& a) -> PlaneCurve {
                                    return ArcCurve{a.center, a.radius_mm, a.start_deg + a.sweep_deg, -a.sweep_deg};
                                },
@@ -165,7 +169,8 @@ std::vector<Vec2> polyline(const PlaneCurve& curve, double deviation_mm, std::si
     }
     steps = std::clamp<std::size_t>(steps, 1, max_points - 1);
     out.reserve(steps + 1);
-    for (std::size_t i = 0; i <= steps; ++i) out.push_back(point_at(curve, end * static_cast<double>(i) / static_cast<double>(steps)));
+    for (std::size_t i = 0; i <= steps; ++i)
+        out.push_back(point_at(curve, end * static_cast<double>(i) / static_cast<double>(steps)));
     return out;
 }
 
@@ -217,13 +222,14 @@ PlaneCurve transformed(const PlaneCurve& curve, const Affine& map) {
                                    const Vec2 s = map.apply(point_at(curve, 0)) - map.apply(a.center);
                                    const double det = map.determinant();
                                    const double scale = std::sqrt(std::abs(det));
-                                   return ArcCurve{map.apply(a.center), a.radius_mm * scale,
-                                                   std::atan2(s.y, s.x) / deg, det < 0 ? -a.sweep_deg : a.sweep_deg};
+                                   return ArcCurve{map.apply(a.center), a.radius_mm * scale, std::atan2(s.y, s.x) / deg,
+                                                   det < 0 ? -a.sweep_deg : a.sweep_deg};
                                },
                                [&](const CubicPath& p) -> PlaneCurve {
                                    CubicPath out;
                                    out.pieces.reserve(p.pieces.size());
-                                   for (const CubicPiece& piece : p.pieces) out.pieces.push_back(transformed(piece, map));
+                                   for (const CubicPiece& piece : p.pieces)
+                                       out.pieces.push_back(transformed(piece, map));
                                    return out;
                                }},
                       curve);

@@ -92,7 +92,8 @@ Result<OutlinePoints> load_outline_csv(const std::filesystem::path& path) {
         out.points.push_back(p);
         out.where.push_back(SourceLocation{file, number, 1});
     }
-    if (!header) return error_at(SourceLocation{file, 1, 1}, "outline-csv", "the outline file is empty (no 'x_mm,y_mm' header)");
+    if (!header)
+        return error_at(SourceLocation{file, 1, 1}, "outline-csv", "the outline file is empty (no 'x_mm,y_mm' header)");
     return out;
 }
 
@@ -161,7 +162,8 @@ Result<SoleOutline> fit_sole_outline(const OutlinePoints& input, double smoothin
     }
     if (pts.points.size() < 4) {
         const SourceLocation at = input.where.empty() ? SourceLocation{} : input.where.back();
-        return error_at(at, "outline", fmt::format("an outline needs at least 4 distinct points, not {}", pts.points.size()));
+        return error_at(at, "outline",
+                        fmt::format("an outline needs at least 4 distinct points, not {}", pts.points.size()));
     }
     auto nearest_point = [&](Vec2 q) {
         std::size_t best = 0;
@@ -183,7 +185,8 @@ Result<SoleOutline> fit_sole_outline(const OutlinePoints& input, double smoothin
     if (polygon_crosses_itself(sample(spline.path, 8), at)) {
         return error_at(nearest_point(at), "outline-crosses",
                         fmt::format("the outline's spline crosses itself near ({:.3f}, {:.3f}) mm (points too "
-                                    "close for their turn: digitise more densely there)", at.x, at.y));
+                                    "close for their turn: digitise more densely there)",
+                                    at.x, at.y));
     }
     SoleOutline out{spline.path, spline.max_fit_error_mm, spline.control_points, bounding_box(PlaneCurve(spline.path))};
     return out;
@@ -205,12 +208,15 @@ Result<Border> inner_border(const SoleOutline& outline, double width_mm, const S
     if (width_mm > 0 && polygon_crosses_itself(points, at)) {
         return error_at(where, "border-width",
                         fmt::format("a border {} mm wide folds over near ({:.3f}, {:.3f}) mm: the outline turns "
-                                    "tighter than that there", width_mm, at.x, at.y));
+                                    "tighter than that there",
+                                    width_mm, at.x, at.y));
     }
     // The offset must also stay a curve of the same sense: a fold inside one sample step.
     double area = 0;
     for (std::size_t i = 0; i < points.size(); ++i) area += cross(points[i], points[(i + 1) % points.size()]);
-    if (area <= 0) return error_at(where, "border-width", fmt::format("a border {} mm wide leaves nothing inside the outline", width_mm));
+    if (area <= 0)
+        return error_at(where, "border-width",
+                        fmt::format("a border {} mm wide leaves nothing inside the outline", width_mm));
     Border border{fit_closed_spline(points, 0).path, 0};
     // Measure the fit against the exact offset halfway between samples.
     for (std::size_t i = 0; i < border.curve.pieces.size(); ++i) {

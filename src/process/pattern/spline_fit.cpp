@@ -24,8 +24,8 @@ std::vector<double> chords(const std::vector<Vec2>& p, bool closed) {
 // Second derivatives M (per coordinate) of the C2 cubic with knots at the cumulative chords:
 // h_{i-1}·M_{i-1} + 2(h_{i-1} + h_i)·M_i + h_i·M_{i+1} = 6·(slope_i − slope_{i−1}); the
 // closed spline wraps round, the open one is natural (M = 0 at both ends).
-std::pair<Eigen::VectorXd, Eigen::VectorXd> second_derivatives(const std::vector<Vec2>& p,
-                                                                const std::vector<double>& h, bool closed) {
+std::pair<Eigen::VectorXd, Eigen::VectorXd> second_derivatives(const std::vector<Vec2>& p, const std::vector<double>& h,
+                                                               bool closed) {
     const auto n = static_cast<Eigen::Index>(p.size());
     Triplets t;
     Eigen::VectorXd rx = Eigen::VectorXd::Zero(n);
@@ -105,7 +105,8 @@ CubicPath least_squares_closed(const std::vector<Vec2>& p, std::size_t m) {
             bx[row] += b[static_cast<std::size_t>(r)] * p[k].x;
             by[row] += b[static_cast<std::size_t>(r)] * p[k].y;
             for (Eigen::Index c = 0; c < 4; ++c) {
-                t.emplace_back(row, (j - 1 + c + mm) % mm, b[static_cast<std::size_t>(r)] * b[static_cast<std::size_t>(c)]);
+                t.emplace_back(row, (j - 1 + c + mm) % mm,
+                               b[static_cast<std::size_t>(r)] * b[static_cast<std::size_t>(c)]);
             }
         }
     }

@@ -66,7 +66,8 @@ TEST(PatternSpline, SmoothingKeepsEveryPointWithinTheToleranceWithFewerControlPo
     for (const Vec2& p : points) EXPECT_LE(nearest_on_path(spline.path, p).distance_mm, 0.05 + 1e-9);
     // The smooth curve is closer to the true ellipse than the noisy points are.
     double worst = 0;
-    for (const CubicPiece& piece : spline.path.pieces) worst = std::max(worst, ellipse_distance(piece.point(0.5), 120, 45));
+    for (const CubicPiece& piece : spline.path.pieces)
+        worst = std::max(worst, ellipse_distance(piece.point(0.5), 120, 45));
     EXPECT_LT(worst, 0.03);
 }
 

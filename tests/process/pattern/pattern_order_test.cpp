@@ -67,11 +67,14 @@ TEST(PatternOrder, NeverWorseThanDrawingOrderAndNeverBelowTheBound) {
         std::vector<std::size_t> order = best.tour.order;
         std::sort(order.begin(), order.end());
         for (std::size_t i = 0; i < order.size(); ++i) EXPECT_EQ(order[i], i);
-        const double bound_time = air_cost_lower_bound(cuts, costs.home,
-                                                       [&](Vec2 a, Vec2 b) { return costs.timer.rapid_s(b - a); },
-                                                       found.air_time_s).value;
+        const double bound_time =
+            air_cost_lower_bound(
+                cuts, costs.home, [&](Vec2 a, Vec2 b) { return costs.timer.rapid_s(b - a); }, found.air_time_s)
+                .value;
         const double bound_distance =
-            air_cost_lower_bound(cuts, costs.home, [](Vec2 a, Vec2 b) { return norm(b - a); }, found.air_distance_mm).value;
+            air_cost_lower_bound(
+                cuts, costs.home, [](Vec2 a, Vec2 b) { return norm(b - a); }, found.air_distance_mm)
+                .value;
         EXPECT_LE(bound_time, found.air_time_s * (1 + 1e-6));
         EXPECT_LE(bound_distance, found.air_distance_mm * (1 + 1e-6));
         EXPECT_GT(bound_distance, 0.5 * found.air_distance_mm);  // a bound worth reporting

@@ -17,8 +17,8 @@ namespace nckit::pattern {
 struct CutEnds {
     Vec2 start;
     Vec2 end;
-    Signs first{0, 0};   //!< each axis's first direction of motion along the cut (0: never moves)
-    Signs last{0, 0};    //!< and its last
+    Signs first{0, 0};  //!< each axis's first direction of motion along the cut (0: never moves)
+    Signs last{0, 0};   //!< and its last
     std::array<int, 2> internal_reversals{0, 0};  //!< X, Y reversals inside the cut (either way round)
 };
 //! From the cut's polyline at `deviation_mm` (the polyline the program cuts).

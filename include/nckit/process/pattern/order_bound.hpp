@@ -18,7 +18,7 @@
 namespace nckit::pattern {
 
 struct OrderBound {
-    double value = 0;        //!< the best bound found
+    double value = 0;  //!< the best bound found
     std::size_t iterations = 0;
 };
 

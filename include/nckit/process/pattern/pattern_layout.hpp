@@ -30,10 +30,10 @@ struct Grading {
 
 struct SoleLayout {
     Grading grading;
-    CubicPath outline;          //!< graded, program coordinates
+    CubicPath outline;  //!< graded, program coordinates
     CubicPath border;
-    std::vector<Cut> cuts;      //!< drawing order: lattice rows, then along each row
-    double fit_error_mm = 0;    //!< the outline spline against the digitised points
+    std::vector<Cut> cuts;    //!< drawing order: lattice rows, then along each row
+    double fit_error_mm = 0;  //!< the outline spline against the digitised points
     double border_offset_error_mm = 0;
     std::size_t control_points = 0;
     std::size_t motif_instances = 0;  //!< lattice places whose motif reaches the border's box
@@ -45,6 +45,7 @@ struct SoleLayout {
 
 //! Fits, grades, tiles and clips. Errors: the outline's (see fit_sole_outline), a border that
 //! folds over, a motif larger than the border, a lattice of more than 200000 places.
-[[nodiscard]] Result<SoleLayout> lay_out_sole(const PatternJob& job, const OutlinePoints& points, const Grading& grading);
+[[nodiscard]] Result<SoleLayout> lay_out_sole(const PatternJob& job, const OutlinePoints& points,
+                                              const Grading& grading);
 
 }  // namespace nckit::pattern

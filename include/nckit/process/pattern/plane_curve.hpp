@@ -18,9 +18,15 @@ struct Vec2 {
     friend Vec2 operator*(double s, Vec2 a) { return {s * a.x, s * a.y}; }
     friend bool operator==(Vec2, Vec2) = default;
 };
-inline double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
-inline double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
-inline double norm(Vec2 a) { return std::hypot(a.x, a.y); }
+inline double dot(Vec2 a, Vec2 b) {
+    return a.x * b.x + a.y * b.y;
+}
+inline double cross(Vec2 a, Vec2 b) {
+    return a.x * b.y - a.y * b.x;
+}
+inline double norm(Vec2 a) {
+    return std::hypot(a.x, a.y);
+}
 
 //! p(u) = c[0] + c[1]·u + c[2]·u² + c[3]·u³ for u in [0, 1].
 struct CubicPiece {

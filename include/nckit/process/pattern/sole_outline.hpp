@@ -26,8 +26,8 @@ struct OutlinePoints {
 [[nodiscard]] Result<OutlinePoints> load_outline_points(const std::filesystem::path& path);
 
 struct SoleOutline {
-    CubicPath curve;             //!< closed, counter-clockwise
-    double fit_error_mm = 0;     //!< largest distance of a digitised point from the curve
+    CubicPath curve;          //!< closed, counter-clockwise
+    double fit_error_mm = 0;  //!< largest distance of a digitised point from the curve
     std::size_t control_points = 0;
     Box box;
 };
