@@ -12,7 +12,7 @@ namespace nckit::drive_detail {
 //! changes the deviation keeps its own exponent and decays to 0, where an absolute position would
 //! stall once v·h fell below half an ulp.
 inline void step_held(const std::array<std::array<double, 2>, 2>& phi, double target, double& held_target,
-                      double& deviation, ServoState& state) {
+                      double& deviation, drive::ServoState& state) {
     const double e = deviation + (held_target - target);
     const double v = state.velocity;
     deviation = phi[0][0] * e + phi[0][1] * v;

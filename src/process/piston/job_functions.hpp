@@ -15,6 +15,9 @@
 
 namespace nckit::piston_detail {
 
+// The piston job is written in the cam's vocabulary (drawings, formulas, profiles).
+using namespace nckit::cam;
+
 using nckit::core_detail::ConfigSink;
 using nckit::core_detail::Need;
 using nckit::core_detail::Sign;
