@@ -133,6 +133,14 @@ Result<std::optional<ProgramSource::Line>> ProgramSource::next() {
     }
 }
 
+void ProgramSource::append(std::string_view text) {
+    if (file_ != nullptr) return;  // a file or pipe is read as it is
+    if (end_ > 0 && text_[end_ - 1] != '\n') text_ += '\n';
+    text_.append(text);
+    if (!text.empty() && text.back() != '\n') text_ += '\n';
+    end_ = text_.size();
+}
+
 void ProgramSource::seek(std::uint64_t offset, std::uint32_t line_number) {
     line_number_ = line_number > 0 ? line_number - 1 : 0;
     if (file_ == nullptr) {

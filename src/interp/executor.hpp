@@ -55,6 +55,13 @@ public:
     //! The end of the program (M2/M30 or the end of its text): compensated moves still held go out.
     [[nodiscard]] std::optional<Diagnostic> end_program(std::vector<Move>& out);
 
+    //! The machine stands elsewhere now (moved by hand, or by LinuxCNC outside the program):
+    //! the next move starts at `machine` (machine coordinates, mm / deg).
+    void set_position(const AxisVector& machine) {
+        position_ = machine;
+        programmed_ = machine;
+    }
+
     [[nodiscard]] bool inch_units() const { return modal_.length_factor_mm != 1.0; }
     //! Units, offsets and modes after the last block run (executor_modal_view.cpp).
     [[nodiscard]] ModalView modal_view() const;

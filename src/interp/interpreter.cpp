@@ -25,6 +25,7 @@ struct Interpreter::State {
     }
     std::vector<Move> pending;
     std::uint64_t batches = 0;
+    std::uint64_t returned = 0;  // moves next() has returned
     std::size_t next_pending = 0;
     std::optional<InterpResult> finished;  // ProgramEnd or Diagnostic, repeated once reached
 
@@ -59,6 +60,39 @@ std::uint64_t Interpreter::output_batch() const {
     return state_->batches;
 }
 
+std::uint64_t Interpreter::moves_made() const {
+    const State& s = *state_;
+    return s.returned + (s.pending.size() - s.next_pending);
+}
+
+int Interpreter::call_depth() const {
+    return state_->ngc ? state_->ngc->call_depth() : state_->runner->call_depth();
+}
+
+const std::string& Interpreter::current_file() const {
+    return state_->ngc ? state_->ngc->current_file() : state_->runner->current_file();
+}
+
+bool Interpreter::append_input(std::string_view text) {
+    State& s = *state_;
+    if (s.finished && !std::holds_alternative<ProgramEnd>(*s.finished)) return false;
+    s.finished.reset();
+    if (s.ngc) {
+        s.ngc->append_main(text);
+    } else {
+        s.runner->append_main(text);
+    }
+    return true;
+}
+
+void Interpreter::set_position(const AxisVector& machine) {
+    if (state_->ngc) {
+        state_->ngc->set_position(machine);
+    } else {
+        state_->runner->set_position(machine);
+    }
+}
+
 InterpResult Interpreter::next() {
     State& s = *state_;
     while (s.next_pending == s.pending.size()) {
@@ -75,6 +109,7 @@ InterpResult Interpreter::next() {
             s.finish(std::move(*stop));
         }
     }
+    ++s.returned;
     return std::move(s.pending[s.next_pending++]);
 }
 

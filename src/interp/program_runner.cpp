@@ -263,8 +263,9 @@ void ProgramRunner::program_stop(const Block& block, std::vector<Move>& pending)
     stop_requested_ = false;
     Io stop{IoKind::mcode, 0, 0};
     stop.waits = true;
-    pending.push_back(Move{stop, block.location, last_sequence_});
+    // The message first: it is shown when the program stops.
     if (options_.on_message) options_.on_message(block.location, block.comment);
+    pending.push_back(Move{stop, block.location, last_sequence_});
     if (options_.on_warning) {
         Diagnostic note = error_at(block.at_column(block.statement.column), "program-stop",
                                    fmt::format("#3006 program stop: {}", block.comment));

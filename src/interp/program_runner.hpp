@@ -56,6 +56,12 @@ public:
     [[nodiscard]] std::uint64_t main_program_offset() const { return sources_.empty() ? 0 : sources_[0].next_offset(); }
 
     [[nodiscard]] ModalView modal_view() const { return executor_.modal_view(); }
+    //! Called programs in progress: 0 in the main program.
+    [[nodiscard]] int call_depth() const { return static_cast<int>(frames_.size()) - 1; }
+    //! The file of the program running now (a called one's when in a call).
+    [[nodiscard]] const std::string& current_file() const { return *sources_[frames_.size() - 1].file(); }
+    void append_main(std::string_view text) { sources_[0].append(text); }
+    void set_position(const AxisVector& machine) { executor_.set_position(machine); }
 
     [[nodiscard]] std::optional<MacroValue> read_system(std::int64_t number) const override;
     [[nodiscard]] std::optional<SystemVariables::WriteError> write_system(std::int64_t number, double value) override;

@@ -33,6 +33,12 @@ public:
     [[nodiscard]] bool mist() const { return mist_; }
     [[nodiscard]] bool flood() const { return flood_; }
     [[nodiscard]] int spindle_direction() const { return spindle_direction_; }
+    //! The work offset plus the G92 shift LinuxCNC was last given, mm / deg (its program
+    //! coordinates are machine coordinates less this); nothing before the first move.
+    [[nodiscard]] std::optional<AxisVector> offset_mm() const {
+        if (!work_offset_ || !g92_offset_) return std::nullopt;
+        return *work_offset_ + *g92_offset_;
+    }
 
 private:
     void set_frame(const ModalView& view);

@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "guarded.hpp"
 #include "nckit/core/tool_table.hpp"
 
 namespace nckit::lcnc {
@@ -21,28 +22,6 @@ char* copy_out(const std::string& text, char* buf, size_t buflen) {
     std::memcpy(buf, text.data(), n);
     buf[n] = '\0';
     return buf;
-}
-
-bool blank(const char* line) {
-    if (line == nullptr) return true;
-    for (const char* p = line; *p != '\0'; ++p) {
-        if (*p != ' ' && *p != '\t' && *p != '\r' && *p != '\n') return false;
-    }
-    return true;
-}
-
-//! Runs `body`; an exception (out of memory, a file system error) becomes an interpreter error
-//! instead of unwinding into LinuxCNC.
-template <typename Body>
-int guarded(std::string& error, Body&& body) {
-    try {
-        return body();
-    } catch (const std::exception& e) {
-        error = fmt::format("nckit interpreter: {}", e.what());
-    } catch (...) {
-        error = "nckit interpreter: unexpected failure";
-    }
-    return INTERP_ERROR;
 }
 
 //! LinuxCNC's tool table as nckit's: in inches on an inch machine, else mm (a .toml file as TOML).
@@ -82,6 +61,9 @@ int NckitInterp::init() {
         }
         settings_ = PluginSettings{};
         setup_error_.reset();
+        close();
+        mdi_.reset();
+        running_ = nullptr;
         machine_.reset();
         if (!ini_path_.empty()) {
             if (auto error = read_plugin_settings(ini_path_, settings_)) {
@@ -118,6 +100,8 @@ int NckitInterp::open(const char* filename) {
         if (!machine_ && !setup_error_) init();
         if (setup_error_) return fail(*setup_error_);
         if (filename == nullptr || filename[0] == '\0') return fail("nckit interpreter: no program file given");
+        // MDI after this run starts afresh: the run may change #500-#999 the MDI session holds.
+        mdi_.reset();
         // The tool table again: offsets set on the machine since (G10 L1, the table editor) count.
         if (int status = load_tools(); status != INTERP_OK) return status;
         // Opened once here so that a missing file is reported at open, as LinuxCNC's own does.
@@ -128,26 +112,38 @@ int NckitInterp::open(const char* filename) {
     });
 }
 
+InterpreterOptions NckitInterp::run_options() {
+    InterpreterOptions options;
+    options.block_delete = GET_BLOCK_DELETE();
+    options.library_dir = settings_.library_dir;
+    options.retained_file = settings_.retained_file;
+    options.max_blocks = settings_.max_blocks;
+    // A message comes before the next move the interpreter makes (LinuxCNC's own order).
+    options.on_message = [this](const SourceLocation&, const std::string& text) {
+        messages_.push_back(Message{running_ != nullptr ? running_->moves_made() : 0, text});
+    };
+    return options;
+}
+
 int NckitInterp::start_run() {
     auto source = ProgramSource::open(program_path_);
     if (!source) {
         program_error_ = source.diagnostics().front();
         return fail_with(*program_error_);
     }
-    InterpreterOptions options;
-    options.block_delete = GET_BLOCK_DELETE();
-    options.library_dir = settings_.library_dir;
-    options.retained_file = settings_.retained_file;
-    options.max_blocks = settings_.max_blocks;
-    options.on_message = [this](const SourceLocation& where, const std::string& text) {
-        messages_.push_back(Message{where.file ? *where.file : program_path_, where.line, text});
-    };
-    interpreter_.emplace(*machine_, std::move(source).value(), options);
-    canon_.emplace(interpreter_->machine(), settings_.g64_tolerance_mm, settings_.exact_path, settings_.line_comments);
+    interpreter_.emplace(*machine_, std::move(source).value(), run_options());
+    canon_.emplace(*machine_, settings_.g64_tolerance_mm, settings_.exact_path, settings_.line_comments);
+    running_ = &*interpreter_;
+    moves_taken_ = 0;
+    messages_.clear();
     return INTERP_OK;
 }
 
 int NckitInterp::close() {
+    if (canon_) {
+        if (auto offset = canon_->offset_mm()) sent_offset_mm_ = offset;
+    }
+    if (running_ == &*interpreter_ || !interpreter_) running_ = nullptr;
     interpreter_.reset();
     canon_.reset();
     pending_.reset();
@@ -157,6 +153,7 @@ int NckitInterp::close() {
     program_path_.clear();
     line_ = 0;
     sequence_ = 0;
+    call_level_ = 0;
     move_file_.clear();
     messages_.clear();
     return INTERP_OK;
@@ -180,6 +177,13 @@ int NckitInterp::on_abort(int, const char*) {
     return INTERP_OK;
 }
 
+void NckitInterp::note_move(const Move& move, const Interpreter& interpreter) {
+    line_ = static_cast<int>(move.where.line);
+    move_file_ = move.where.file ? *move.where.file : program_path_;
+    call_level_ = interpreter.call_depth();
+    if (move.sequence_number >= 0) sequence_ = static_cast<int>(move.sequence_number);
+}
+
 // ---- running ---------------------------------------------------------------------------------
 
 int NckitInterp::read() {
@@ -191,12 +195,12 @@ int NckitInterp::read() {
         if (!interpreter_) {
             if (int status = start_run(); status != INTERP_OK) return status;
         }
+        running_ = &*interpreter_;
         InterpResult result = interpreter_->next();
         view_ = interpreter_->modal_view();
         if (auto* move = std::get_if<Move>(&result)) {
-            line_ = static_cast<int>(move->where.line);
-            move_file_ = move->where.file ? *move->where.file : program_path_;
-            if (move->sequence_number >= 0) sequence_ = static_cast<int>(move->sequence_number);
+            note_move(*move, *interpreter_);
+            pending_ordinal_ = moves_taken_++;
             pending_ = std::move(*move);
             return static_cast<int>(INTERP_OK);
         }
@@ -212,13 +216,13 @@ int NckitInterp::read() {
 int NckitInterp::execute() {
     return guarded(error_, [&] {
         if (pending_) {
-            issue_messages(&*pending_);
+            issue_messages(pending_ordinal_);
             AfterMove after = canon_->emit(*pending_, view_);
             pending_.reset();
             return static_cast<int>(after == AfterMove::wait_for_motion ? INTERP_EXECUTE_FINISH : INTERP_OK);
         }
         if (pending_end_) {
-            issue_messages(nullptr);
+            issue_messages(std::nullopt);
             canon_->emit_program_end();
             pending_end_ = false;
             ended_ = true;
@@ -228,39 +232,15 @@ int NckitInterp::execute() {
     });
 }
 
-void NckitInterp::issue_messages(const Move* before) {
+void NckitInterp::issue_messages(std::optional<std::uint64_t> before) {
     std::size_t issued = 0;
     for (const Message& m : messages_) {
-        if (before != nullptr) {
-            const std::string file = before->where.file ? *before->where.file : program_path_;
-            // A move of an earlier block of the same file still comes first.
-            if (file == m.file && before->where.line < m.line) break;
-        }
+        // A move made before the message (an earlier block's, held by cutter compensation) first.
+        if (before && m.before_move > *before) break;
         canon_->message(m.text);
         ++issued;
     }
     messages_.erase(messages_.begin(), messages_.begin() + static_cast<std::ptrdiff_t>(issued));
-}
-
-int NckitInterp::read(const char* line) {
-    if (blank(line)) return INTERP_OK;
-    return fail(
-        fmt::format("nckit interpreter: MDI is not supported ('{}'): run commands from a program "
-                    "in AUTO mode",
-                    line));
-}
-
-int NckitInterp::execute(const char* line) {
-    if (line == nullptr) return execute();
-    return read(line);
-}
-
-int NckitInterp::execute(const char* line, int) {
-    return execute(line);
-}
-
-int NckitInterp::synch() {
-    return INTERP_OK;
 }
 
 // ---- what LinuxCNC shows ---------------------------------------------------------------------
@@ -283,19 +263,22 @@ size_t NckitInterp::line_length() {
     return std::strlen(line_text(buf, sizeof buf));
 }
 
+// The file of the block last read, as LinuxCNC's own interpreter names it: a called program's
+// inside a call (line() is a line of this file), else the opened program.
 char* NckitInterp::file_name(char* buf, size_t buflen) {
-    return copy_out(program_path_, buf, buflen);
+    return copy_out(move_file_.empty() ? program_path_ : move_file_, buf, buflen);
 }
 char* NckitInterp::file(char* buf, size_t buflen) {
-    return copy_out(program_path_, buf, buflen);
+    return file_name(buf, buflen);
 }
 
-// The call stack as far as the plug-in sees it: the file of the move last read, then the main
-// program when that is a called one (nckit does not hand out deeper levels).
+// The call stack as far as the plug-in sees it: the file of the move last read at index 0, the
+// main program at the index of the call level when that is above 0 (the files of levels
+// between are not handed out).
 char* NckitInterp::stack_name(int index, char* buf, size_t buflen) {
     std::string name;
     if (index == 0) name = move_file_;
-    if (index == 1 && call_level() > 0) name = program_path_;
+    if (index > 0 && index == call_level_) name = program_path_;
     return copy_out(name, buf, buflen);
 }
 
@@ -305,10 +288,10 @@ int NckitInterp::sequence_number() {
 int NckitInterp::line() {
     return line_;
 }
-// 0 in the main program, 1 in a called one (G65, M98, M-/G-code calls; the depth of nested
-// calls is not tracked): LinuxCNC's status shows it as the subroutine level.
+// Called programs in progress at the move last read (G65, M98, M-/G-code calls, O-word calls):
+// 0 in the main program. LinuxCNC's status shows it as the subroutine level.
 int NckitInterp::call_level() {
-    return !move_file_.empty() && move_file_ != program_path_ ? 1 : 0;
+    return call_level_;
 }
 
 void NckitInterp::active_g_codes(int g[ACTIVE_G_CODES]) {

@@ -58,6 +58,10 @@ private:
     int start_run();                     //!< the interpreter for the opened file
     int load_tools();                    //!< the tool table of the settings into machine_
     int fail_with(const Diagnostic& d);  //!< a program error: its FILE:LINE:COL text
+    InterpreterOptions run_options();    //!< the options of a program run and of MDI
+    int run_mdi(const char* command);    //!< one MDI block, all its calls issued
+    //! The move just taken from `interpreter`: where it comes from (line, file, call level).
+    void note_move(const Move& move, const Interpreter& interpreter);
 
     std::string ini_path_;
     PluginSettings settings_;
@@ -67,27 +71,38 @@ private:
     std::string program_path_;                // the opened program; empty: none
     std::optional<Interpreter> interpreter_;  // made at the first read (block delete is known then)
     std::optional<CanonOutput> canon_;
-    std::optional<Move> pending_;  // read, not yet executed
-    bool pending_end_ = false;     // read the program end, not yet executed
-    bool ended_ = false;           // the end was executed: read() says so again
+    //! MDI: one program of all commands given since the last program run, so that modes and
+    //! variables carry from one command to the next. Dropped by an error, init and a program run.
+    std::optional<Interpreter> mdi_;
+    //! Where LinuxCNC last said the machine stands (synch()), machine coordinates mm / deg.
+    std::optional<AxisVector> synched_position_;
+    //! LinuxCNC's offsets as the last CanonOutput gave them (kept when a run closes).
+    std::optional<AxisVector> sent_offset_mm_;
+    Interpreter* running_ = nullptr;  // the interpreter advanced now (messages ask it)
+    std::uint64_t moves_taken_ = 0;   // moves taken from running_
+    std::optional<Move> pending_;     // read, not yet executed
+    bool pending_end_ = false;        // read the program end, not yet executed
+    bool ended_ = false;              // the end was executed: read() says so again
     std::optional<Diagnostic> program_error_;
     ModalView view_;  // the modes of the pending move's block
 
     std::string error_;  // error_text's message
     int line_ = 0;
     int sequence_ = 0;
+    int call_level_ = 0;     // called programs in progress at the move last read
     std::string move_file_;  // the file of the move last read (a called program's)
 
     //! Operator messages the interpreter gave, waiting for the first move of their block or
     //! after it: messages come while a block is read, which may be before moves still queued
     //! from earlier blocks (cutter compensation looks ahead) are executed.
     struct Message {
-        std::string file;
-        std::uint32_t line = 0;
+        std::uint64_t before_move = 0;  //!< the ordinal of the move made after it
         std::string text;
     };
     std::vector<Message> messages_;
-    void issue_messages(const Move* before);  //!< the messages due before `before` (all: null)
+    //! The messages due before the move of ordinal `before` (all: nothing).
+    void issue_messages(std::optional<std::uint64_t> before);
+    std::uint64_t pending_ordinal_ = 0;  // pending_'s ordinal among the moves taken
 };
 
 }  // namespace nckit::lcnc

@@ -11,10 +11,11 @@ with a bad row ([NCKIT] TOOL_TABLE), EXACT_PATH with a value other than 0 or 1, 
 import argparse
 import os
 import re
-import shutil
-import subprocess
 import sys
 import tempfile
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from rs274_support import find_rs274, plugin_loaded, run_rs274  # noqa: E402
 
 CASES = [
     # (name, INI text, tool table text or None, what stderr must say)
@@ -37,10 +38,9 @@ def run_case(args, name, ini_text, table_text, wanted):
         if table_text is not None:
             with open(os.path.join(work, "tools.tbl"), "w") as f:
                 f.write(table_text)
-        proc = subprocess.run([args.rs274, "-p", args.plugin, "-i", ini, "-g", args.program], cwd=work,
-                              stdin=subprocess.DEVNULL, capture_output=True, text=True, timeout=60)
-    if f"using custom interpreter '{args.plugin}'" not in proc.stderr:
-        return f"{name}: rs274 did not load the plug-in: {proc.stderr.strip()[:200]}"
+        proc = run_rs274(args.rs274, args.program, plugin=args.plugin, ini=ini, cwd=work)
+    if (why := plugin_loaded(proc, args.plugin)):
+        return f"{name}: {why}"
     if not re.search(wanted, proc.stderr):
         return f"{name}: expected /{wanted}/ on stderr, got: {proc.stderr.strip()[:300]}"
     if proc.returncode == 0:
@@ -54,8 +54,9 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--plugin", required=True)
     ap.add_argument("--program", required=True)
-    ap.add_argument("--rs274", default=shutil.which("rs274"))
+    ap.add_argument("--rs274")
     args = ap.parse_args()
+    args.rs274 = find_rs274(args.rs274)
     if not args.rs274:
         print("error: LinuxCNC's rs274 not found; run scripts/deps.sh", file=sys.stderr)
         return 1

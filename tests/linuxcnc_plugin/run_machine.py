@@ -63,8 +63,10 @@ def fail(msg):
 # Configuration
 # ---------------------------------------------------------------------------------------------
 
-def prepare(args, work):
-    """The scratch copy of the example configuration; returns (ini path, axis letters)."""
+def prepare(args, work, display_script=None):
+    """The scratch copy of the example configuration, with `display_script` (this file when not
+    given) run by `--display` as LinuxCNC's DISPLAY and args.library (if any) as [NCKIT] LIBRARY;
+    returns (ini path, axis letters, the nckit options of the same machine)."""
     src_dir = os.path.dirname(os.path.abspath(args.config))
     ini = read_ini(args.config)
     for name in os.listdir(src_dir):
@@ -80,7 +82,7 @@ def prepare(args, work):
     display = os.path.join(work, "display.sh")
     with open(display, "w") as f:
         f.write("#!/bin/sh\n# LinuxCNC DISPLAY: the --display mode of run_machine.py\n"
-                f"exec /usr/bin/python3 '{os.path.abspath(__file__)}' --display \"$@\"\n")
+                f"exec /usr/bin/python3 '{os.path.abspath(display_script or __file__)}' --display \"$@\"\n")
     os.chmod(display, 0o755)
     replace = {("TASK", "INTERPRETER"): str(args.plugin),
                ("DISPLAY", "DISPLAY"): display,
@@ -89,6 +91,8 @@ def prepare(args, work):
     for key in ("MACHINE", "LIBRARY"):
         if absolute(key):
             replace[("NCKIT", key)] = absolute(key)
+    if getattr(args, "library", None):
+        replace[("NCKIT", "LIBRARY")] = os.path.abspath(args.library)
     append = {"HAL": [f"HALFILE = {os.path.join(work, 'sampler.hal')}"]}
     with open(args.config) as f:
         text = rewrite_ini(f.read(), replace, append)
@@ -109,8 +113,8 @@ def prepare(args, work):
     nckit_opts = []
     if absolute("MACHINE"):
         nckit_opts += ["--machine", absolute("MACHINE")]
-    if absolute("LIBRARY"):
-        nckit_opts += ["--library", absolute("LIBRARY")]
+    if replace.get(("NCKIT", "LIBRARY")):
+        nckit_opts += ["--library", replace[("NCKIT", "LIBRARY")]]
     return ini_path, axes, nckit_opts
 
 
@@ -226,6 +230,22 @@ def run_linuxcnc(args, work, ini_path, env):
         return f.read()
 
 
+def unprivileged(work, env):
+    """As root: LinuxCNC runs as an unprivileged user (it refuses root), with its RTAPI socket and
+    files in `work`, which it must be able to write."""
+    if os.geteuid() != 0:
+        return
+    fifo = os.path.join(work, "rtapi_fifo")
+    os.makedirs(fifo)
+    os.chmod(fifo, 0o1777)
+    env["RTAPI_UID"] = "65534"
+    env["RTAPI_FIFO_PATH"] = os.path.join(fifo, "rtapi_fifo")
+    for name in os.listdir(work):
+        path = os.path.join(work, name)
+        os.chmod(path, 0o777 if os.path.isdir(path) else 0o666)
+    os.chmod(os.path.join(work, "display.sh"), 0o755)
+
+
 def parent_main(args):
     args.program = os.path.abspath(args.program)
     args.plugin = os.path.abspath(args.plugin)
@@ -249,15 +269,7 @@ def parent_main(args):
         with open(os.path.join(work, "run.json"), "w") as f:
             json.dump({"program": program, "spindle_override": args.spindle_override,
                        "run_timeout_s": max(10.0, args.timeout - 30.0)}, f)
-        if os.geteuid() == 0:
-            fifo = os.path.join(work, "rtapi_fifo")
-            os.makedirs(fifo)
-            os.chmod(fifo, 0o1777)
-            env["RTAPI_UID"] = "65534"
-            env["RTAPI_FIFO_PATH"] = os.path.join(fifo, "rtapi_fifo")
-            for name in os.listdir(work):  # the unprivileged LinuxCNC writes its files here
-                os.chmod(os.path.join(work, name), 0o777 if os.path.isdir(os.path.join(work, name)) else 0o666)
-            os.chmod(os.path.join(work, "display.sh"), 0o755)
+        unprivileged(work, env)
         t0 = time.monotonic()
         log = run_linuxcnc(args, work, ini_path, env)
         wall = time.monotonic() - t0
@@ -354,6 +366,7 @@ def main():
                     help="largest distance of a sample from nckit's path (default %(default)s)")
     ap.add_argument("--expect-call-level", type=int, metavar="N",
                     help="the highest subroutine level LinuxCNC's status shows during the run")
+    ap.add_argument("--library", help="[NCKIT] LIBRARY: the folder of called programs")
     ap.add_argument("--timeout", type=float, default=600.0)
     ap.add_argument("--keep", metavar="DIR", help="keep the configuration, log and samples here")
     return parent_main(ap.parse_args())

@@ -39,6 +39,10 @@ public:
     [[nodiscard]] std::uint64_t next_offset() const { return buffer_offset_ + begin_; }
     [[nodiscard]] std::uint32_t next_line_number() const { return line_number_ + 1; }
 
+    //! More lines at the end of a program made from a string (MDI: each command a further line
+    //! of one growing program); a line end is added when `text` has none. Not for files.
+    void append(std::string_view text);
+
     //! Continue reading at a line returned earlier.
     void seek(std::uint64_t offset, std::uint32_t line_number);
 

@@ -3,6 +3,8 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <string>
+#include <string_view>
 #include <variant>
 #include <vector>
 
@@ -83,6 +85,24 @@ public:
     //! the last change of this number came from one run of the blocks (a block run again in a
     //! loop shows up under a new number, though its source line is the same).
     [[nodiscard]] std::uint64_t output_batch() const;
+
+    //! Moves made so far: those next() returned and those made in the refill running now. An
+    //! on_message callback reads it to know which move its message comes before.
+    [[nodiscard]] std::uint64_t moves_made() const;
+
+    //! Called programs in progress when the last move was made (0: the main program), and the
+    //! file of the program running then.
+    [[nodiscard]] int call_depth() const;
+    [[nodiscard]] const std::string& current_file() const;
+
+    //! MDI: `text` becomes further lines of a program made from a string, and a run that ended
+    //! (at the end of its text, M2 or M30) goes on with them, in the modes and with the variables
+    //! it left. False when the run stopped at an error: it cannot go on.
+    [[nodiscard]] bool append_input(std::string_view text);
+
+    //! The machine stands at `machine` (machine coordinates, mm / deg) now, moved outside the
+    //! program: the next move starts there.
+    void set_position(const AxisVector& machine);
 
 private:
     struct State;

@@ -45,6 +45,7 @@ NgcRunner::NgcRunner(const MachineConfig& machine, ProgramSource main, const Int
     files_.emplace(main_file_, std::move(reader));
     frames_.push_back(Frame{});
     connect_live_parameters();
+    parameters_.write(5599, 1.0);  // (DEBUG,...) shown, as LinuxCNC starts; its file may say otherwise
     // As LinuxCNC starts: the parameter file first, then RS274NGC_STARTUP_CODE (here the machine
     // file's `startup_gcodes`), whose G54-G59 wins over the file's #5220.
     if (auto error = load_parameter_file()) {
@@ -374,6 +375,10 @@ std::optional<Diagnostic> NgcRunner::comments() {
             text = substitute_parameters(text);
         }
         if (c.kind == CommentKind::abort) return fail(c.column, fmt::format("abort: {}", text));
+        // LinuxCNC shows (MSG,...) to the operator, and (DEBUG,...) as well while #5599 (its
+        // debug switch, 1 at start-up) is above 0; (PRINT,...) goes to its standard output only.
+        const bool shown = c.kind == CommentKind::msg || (c.kind == CommentKind::debug && parameters_.read(5599) > 0);
+        if (shown && options_.on_message) options_.on_message(line_.at(c.column), text);
         if (options_.on_warning) {
             Diagnostic note = error_at(line_.at(c.column), c.kind == CommentKind::msg ? "ngc-msg" : "ngc-print", text);
             note.severity = Severity::note;

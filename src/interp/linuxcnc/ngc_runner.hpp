@@ -31,6 +31,11 @@ public:
     [[nodiscard]] bool error_is_recoverable() const { return error_is_recoverable_; }
     [[nodiscard]] std::uint64_t main_program_offset() const { return main_offset_; }
     [[nodiscard]] ModalView modal_view() const { return executor_.modal_view(); }
+    //! O-word and M98 calls in progress: 0 in the main program.
+    [[nodiscard]] int call_depth() const { return static_cast<int>(frames_.size()) - 1; }
+    [[nodiscard]] const std::string& current_file() const { return *current_->file(); }
+    void append_main(std::string_view text) { files_.at(main_file_)->append(text); }
+    void set_position(const AxisVector& machine) { executor_.set_position(machine); }
 
 private:
     //! Where an O-word label was seen (LinuxCNC's offset table).
