@@ -22,7 +22,7 @@ Checks:
   machine coordinates) within 1e-4 mm, the samples pass along the path in order;
 - --expect-end: no error, and the last sample is the end of nckit's last move (program end);
 - --expect-call-level N: the highest subroutine level LinuxCNC's status showed (the plug-in's
-  call_level(): 0 in the main program, 1 in a called one) is N;
+  call_level(): 0 in the main program, 1 in a called one, 2 in one that calls) is N;
 - --expect-alarm N: LinuxCNC reports an error naming `alarm N` and `PROGRAM:LINE:` (the line nckit
   reports), the machine stops at the end of the last move before that block: nothing of the
   block moved.
