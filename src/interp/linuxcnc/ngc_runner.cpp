@@ -180,6 +180,7 @@ std::optional<InterpResult> NgcRunner::run_ordinary(std::vector<Move>& pending) 
             probing = true;
         }
     }
+    if (auto error = read_inverse_time()) return InterpResult(std::move(*error));
     if (auto error = translate_block()) return InterpResult(std::move(*error));
     bool program_end = false;
     const std::size_t first_new = pending.size();
@@ -194,6 +195,7 @@ std::optional<InterpResult> NgcRunner::run_ordinary(std::vector<Move>& pending) 
             pending.erase(pending.begin() + static_cast<std::ptrdiff_t>(mark));
         }
     }
+    apply_inverse_time(pending, first_new);
     follow_linuxcnc_tapping(pending, first_new);
     if (probing) {
         // LinuxCNC refuses a probe shorter than 0.01 in (0.254 mm) in X Y Z.
