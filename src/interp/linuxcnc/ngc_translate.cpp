@@ -24,6 +24,14 @@ std::optional<Diagnostic> NgcRunner::translate_block() {
             m_io = static_cast<int>(w.value);
         }
     }
+    const bool orient = std::any_of(block_.words.begin(), block_.words.end(),
+                                    [](const Word& w) { return w.letter == 'M' && w.value == 19; });
+    if (orient) {
+        // M19 R (angle) Q (time-out) P (direction): a spindle orientation, no motion of the axes.
+        std::erase_if(block_.words,
+                      [](const Word& w) { return w.letter == 'R' || w.letter == 'Q' || w.letter == 'P'; });
+        p = nullptr;
+    }
     if (m_io != 0) {
         // Override switches (M50-M53 P), M61 Q (set the loaded tool), digital and analog I/O
         // (M62-M65 P, M66 P E L Q, M67/M68 E Q): events without motion; their pin, value and
