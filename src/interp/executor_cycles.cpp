@@ -139,8 +139,10 @@ std::optional<Diagnostic> Executor::drill(std::vector<Move>& out) {
     if (back_boring) hole.clear_mm = cycle.initial_z_mm;
     if (hole.repeats == 0) return std::nullopt;  // K0: the words are kept, nothing is drilled
 
-    // Below R: rise to it first, where the tool stands.
-    if (!back_boring && position_[d] < hole.r_mm) {
+    // Below R: rise to it first, where the tool stands. LinuxCNC judges by the initial level,
+    // so it rises again (a move of no length) on every block of a cycle begun below R.
+    const bool initial_below = machine_.dialect == Dialect::linuxcnc && cycle.initial_z_mm < hole.r_mm;
+    if (!back_boring && (position_[d] < hole.r_mm || initial_below)) {
         AxisVector up = position_;
         up[d] = hole.r_mm;
         if (auto e = straight(g(0), up, out)) return e;

@@ -140,9 +140,9 @@ public:
             char c = peek();
             if (c == '#') {
                 if (auto e = setting()) return e;
-            } else if (is_lower(c) && c != 'n' && c != 'o') {
-                NgcWord word;
-                word.letter = static_cast<char>(c - 'a' + 'A');
+            } else if ((is_lower(c) && c != 'n' && c != 'o') || c == '@' || c == '^') {
+                NgcWord word;  // `@` and `^`: polar radius and angle
+                word.letter = is_lower(c) ? static_cast<char>(c - 'a' + 'A') : c;
                 word.column = column();
                 ++pos_;
                 if (auto e = value(word.expr)) return e;

@@ -21,20 +21,6 @@ struct Staged {
 
 constexpr std::string_view axis_letters_ngc = "XYZABCUVW";  // LinuxCNC's order of #5061-#5069
 
-bool has_g(const Block& block, double code) {
-    for (const Word& w : block.words) {
-        if (w.letter == 'G' && std::abs(w.value - code) < 1e-9) return true;
-    }
-    return false;
-}
-
-Word* find_word(Block& block, char letter) {
-    for (Word& w : block.words) {
-        if (w.letter == letter) return &w;
-    }
-    return nullptr;
-}
-
 }  // namespace
 
 NgcRunner::NgcRunner(const MachineConfig& machine, ProgramSource main, const InterpreterOptions& options)
@@ -195,10 +181,22 @@ std::optional<InterpResult> NgcRunner::run_ordinary(std::vector<Move>& pending) 
             probing = true;
         }
     }
+    if (auto error = read_inverse_time()) return InterpResult(std::move(*error));
     if (auto error = translate_block()) return InterpResult(std::move(*error));
     bool program_end = false;
     const std::size_t first_new = pending.size();
-    if (auto error = executor_.run(block_, pending, program_end)) return InterpResult(std::move(*error));
+    for (std::size_t i = 0; i < run_list_.size() && !program_end; ++i) {
+        const std::size_t mark = pending.size();
+        if (auto error = executor_.run(run_list_[i], pending, program_end)) return InterpResult(std::move(*error));
+        // A polar cycle's repeat is one turn of LinuxCNC's L loop, which does not rise to R
+        // again: the Executor, seeing a new block, does (a move of no length); it goes.
+        const Line* rise =
+            i >= repeats_from_ && mark < pending.size() ? std::get_if<Line>(&pending[mark].what) : nullptr;
+        if (rise != nullptr && rise->rapid && rise->from == rise->to) {
+            pending.erase(pending.begin() + static_cast<std::ptrdiff_t>(mark));
+        }
+    }
+    apply_inverse_time(pending, first_new);
     follow_linuxcnc_tapping(pending, first_new);
     if (probing) {
         // LinuxCNC refuses a probe shorter than 0.01 in (0.254 mm) in X Y Z.
@@ -301,70 +299,6 @@ std::optional<Diagnostic> NgcRunner::resolve_block() {
         block_.words.push_back(Word{w.letter, value, true, w.column, -1});
     }
     return std::nullopt;
-}
-
-std::optional<Diagnostic> NgcRunner::translate_block() {
-    // G4 P and a drilling cycle's P are seconds in LinuxCNC; the Executor reads Fanuc's
-    // milliseconds for P and seconds for G4 X.
-    Word* p = find_word(block_, 'P');
-    const bool dwell = has_g(block_, 4);
-    int m_io = 0;
-    for (const Word& w : block_.words) {
-        if (w.letter == 'M' && ((w.value >= 50 && w.value <= 53) || (w.value >= 61 && w.value <= 68))) {
-            m_io = static_cast<int>(w.value);
-        }
-    }
-    if (m_io != 0) {
-        // Override switches (M50-M53 P), M61 Q (set the loaded tool), digital and analog I/O
-        // (M62-M65 P, M66 P E L Q, M67/M68 E Q): events without motion; their pin, value and
-        // wait words are LinuxCNC's and have no meaning for the planner.
-        std::erase_if(block_.words, [](const Word& w) {
-            return w.letter == 'P' || w.letter == 'E' || w.letter == 'L' || w.letter == 'Q';
-        });
-        p = nullptr;
-    }
-    if (p != nullptr && dwell) {
-        p->letter = 'X';
-    } else if (p != nullptr && !has_g(block_, 10) && !has_g(block_, 64)) {
-        bool cycle = false;
-        for (double code : {82.0, 86.0, 88.0, 89.0}) cycle = cycle || has_g(block_, code);
-        int modal = executor_.modal_view().motion_code;
-        cycle = cycle || modal == 820 || modal == 860 || modal == 880 || modal == 890;
-        if (cycle) p->value *= 1000.0;
-    }
-    if (has_g(block_, 43) && find_word(block_, 'H') == nullptr) {
-        // LinuxCNC's G43 without H takes the loaded tool's length.
-        std::uint32_t column = 1;
-        for (const Word& w : block_.words) {
-            if (w.letter == 'G' && w.value == 43) column = w.column;
-        }
-        block_.words.push_back(Word{'H', static_cast<double>(executor_.modal_view().tool), true, column, -1});
-    }
-    for (Word& w : block_.words) {
-        if (w.letter == 'G' && std::abs(w.value - 61.1) < 1e-9) w.value = 61;  // exact path: as G61 here
-    }
-    add_motion_to_here();
-    return std::nullopt;
-}
-
-void NgcRunner::add_motion_to_here() {
-    // LinuxCNC moves to where it is when a block names G0 or G1 without an axis word (`G0 S1000`,
-    // `G1 F100`): a zero-length move, which ends blending there. The Executor moves only for axis
-    // words, so the block gets the current X.
-    const Word* motion = nullptr;
-    for (const Word& w : block_.words) {
-        if (w.letter == 'G' && (w.value == 0 || w.value == 1)) motion = &w;
-        if (w.letter == 'G' && (w.value == 4 || w.value == 10 || w.value == 28 || w.value == 30 || w.value == 52 ||
-                                w.value == 53 || w.value == 92)) {
-            return;  // those take axis words for themselves
-        }
-        if (axis_from_letter(w.letter).has_value()) return;
-    }
-    if (motion == nullptr || machine_.axes.empty()) return;
-    const char axis_char = letter(machine_.axes.front().axis);
-    const bool incremental = executor_.modal_view().incremental;
-    const double here = incremental ? 0.0 : axis_position(axis_char).value_or(0.0);
-    block_.words.push_back(Word{axis_char, here, true, motion->column, -1});
 }
 
 std::optional<Diagnostic> NgcRunner::comments() {

@@ -60,9 +60,19 @@ private:
     std::optional<InterpResult> run_line(std::vector<Move>& pending);
     std::optional<InterpResult> run_ordinary(std::vector<Move>& pending);
     std::optional<Diagnostic> resolve_block();
-    std::optional<Diagnostic> translate_block();
     std::optional<Diagnostic> comments();
+
+    // ngc_translate.cpp, ngc_polar.cpp: LinuxCNC's meanings of words, as blocks for the Executor.
+    std::optional<Diagnostic> translate_block();
+    [[nodiscard]] std::optional<Diagnostic> check_tool_numbers() const;
+    void split_dwell(Word& p);
+    void comp_from_loaded_tool();
+    std::optional<Diagnostic> translate_polar(std::vector<Block>& repeats);
     void add_motion_to_here();
+
+    // ngc_inverse_time.cpp: G93.
+    std::optional<Diagnostic> read_inverse_time();
+    void apply_inverse_time(std::vector<Move>& pending, std::size_t first_new) const;
     void follow_linuxcnc_tapping(std::vector<Move>& pending, std::size_t first_new);
     std::optional<Diagnostic> back_off_after_probe(std::vector<Move>& pending, std::size_t first_new);
     [[nodiscard]] Diagnostic fail(std::uint32_t column, std::string message) const;
@@ -106,6 +116,17 @@ private:
 
     NgcLine line_;
     Block block_;
+    std::vector<Block> run_list_;  //!< what one line runs: block_, and a dwell before or repeats after it
+    //! F of a recent G93 block, found again by its moves' source line.
+    struct InverseFeed {
+        const std::string* file = nullptr;
+        std::uint32_t line = 0;
+        double mm_per_min = 0;  //!< F x the programmed length, mm/min (deg/min for rotary alone)
+    };
+    std::vector<InverseFeed> inverse_feeds_;
+    bool inverse_time_ = false;                       //!< G93 in force
+    std::size_t repeats_from_ = 0;                    //!< index in run_list_ of the first repeat of a polar cycle
+    static constexpr int max_polar_repeats = 100000;  //!< bounds L of a polar G91 cycle
     std::uint64_t line_offset_ = 0;
     std::uint64_t main_offset_ = 0;
     std::int64_t counted_lines_ = 0;
