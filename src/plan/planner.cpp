@@ -167,9 +167,9 @@ struct Planner::Impl {
         pending = &next;
     }
 
-    //! Trapezoid plans round a corner between two lines with a circular arc.
+    //! Trapezoid plans round a corner between two lines with a parabola (junction.hpp).
     bool blend_corner(Pending& p, Pending& next, double tolerance) {
-        auto blend = plan_detail::blend_lines(p.path, p.full_length, next.path, tolerance);
+        auto blend = plan_detail::parabolic_corner(p.path, p.full_length, next.path, tolerance);
         if (!blend) return false;
         p.path.length -= blend->trim_mm;
         insert_between(p, next, blend->arc, blend->trim_mm, trapezoid_blend_normal_share);
