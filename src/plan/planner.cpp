@@ -74,7 +74,8 @@ struct Planner::Impl {
           lookahead(kind, o.window_moves, machine.spindle) {}
 
     void add_segment(PathSegment path, const ProfileLimits& limits, double junction_max, const SourceLocation& where,
-                     std::int64_t sequence_number, bool blend, std::vector<WindowEvent> after) {
+                     std::int64_t sequence_number, bool blend, std::vector<WindowEvent> after,
+                     bool continues_move = false) {
         position = end_point(path);
         at_rest = !(junction_max > 0);
         WindowSegment s;
@@ -84,6 +85,7 @@ struct Planner::Impl {
         s.where = where;
         s.sequence_number = sequence_number;
         s.blend = blend;
+        s.continues_move = continues_move;
         s.after = std::move(after);
         lookahead.add(std::move(s));
     }
@@ -110,7 +112,8 @@ struct Planner::Impl {
                 const bool last = k + 1 == arc_pieces.size();
                 const ProfileLimits& limits = arc_pieces[k].limits;
                 add_segment(std::move(arc_pieces[k].path), limits, last && stop ? 0.0 : limits.max_velocity, p.where,
-                            p.sequence_number, false, last ? std::move(pending_events) : std::vector<WindowEvent>{});
+                            p.sequence_number, false, last ? std::move(pending_events) : std::vector<WindowEvent>{},
+                            k > 0);
             }
         } else {
             const ProfileLimits limits = limits_of(p);
