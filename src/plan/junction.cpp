@@ -72,4 +72,31 @@ std::optional<Blend> blend_lines(const PathSegment& before, double before_full_m
     return blend;
 }
 
+std::optional<Blend> parabolic_corner(const PathSegment& before, double before_full_mm, const PathSegment& after,
+                                      double tolerance_mm) {
+    // The same corners as the circular blend (lines of unit XYZ direction, other axes at one rate).
+    const std::optional<Blend> circle = blend_lines(before, before_full_mm, after, tolerance_mm);
+    if (!circle) return std::nullopt;
+    std::array<double, 3> jump{};
+    double jump_norm = 0;
+    for (std::size_t i = 0; i < 3; ++i) {
+        jump[i] = after.rate[i] - before.rate[i];
+        jump_norm += jump[i] * jump[i];
+    }
+    jump_norm = std::sqrt(jump_norm);
+    const double trim =
+        std::min({4.0 * tolerance_mm / jump_norm, 0.5 * before_full_mm, 0.5 * after.length, before.length});
+    if (!(trim > 0)) return std::nullopt;
+    Blend blend;
+    blend.trim_mm = trim;
+    blend.deviation_mm = trim * jump_norm / 4.0;
+    PathSegment& g = blend.arc;
+    g.shape = SegmentShape::quintic;
+    g.length = 2.0 * trim;
+    g.origin = position_at(before, before.length - trim);
+    g.rate = before.rate;
+    for (std::size_t i = 0; i < 3; ++i) g.poly[0][i] = jump[i] / (4.0 * trim);  // K/2
+    return blend;
+}
+
 }  // namespace nckit::plan_detail

@@ -36,4 +36,16 @@ struct Blend {
 [[nodiscard]] std::optional<Blend> blend_lines(const PathSegment& before, double before_full_mm,
                                                const PathSegment& after, double tolerance_mm);
 
+//! A trapezoid corner between the same lines as blend_lines, as the parabola
+//! q(s) = P0 + d1·s + ½·K·s², K = (d2 − d1)/(2·trim), s in [0, 2·trim] (shape quintic, only
+//! its s² term non-zero), from `trim` before the corner to `trim` after it. At constant ṡ every
+//! axis accelerates at K_i·ṡ², constant over the whole corner: the axis that stops brakes while
+//! the one that starts speeds up, over the same time, instead of a circle handing the turning
+//! from one axis to the other. Its midpoint is trim·|d2 − d1|/4 from the corner and the rest
+//! is nearer, so trim = 4·tol/|d2 − d1| = 2·tol/sin(φ/2), at most half of either line.
+//! Per axis |K_i| <= sin²(φ/2)/(2·tol), never above a circle's 1/R = (1/cos(φ/2) − 1)/tol
+//! at the same deviation (a 90° corner: 17.7 against 41.4 /mm at tol 0.01 mm).
+[[nodiscard]] std::optional<Blend> parabolic_corner(const PathSegment& before, double before_full_mm,
+                                                    const PathSegment& after, double tolerance_mm);
+
 }  // namespace nckit::plan_detail

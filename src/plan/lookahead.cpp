@@ -239,6 +239,7 @@ void Lookahead::commit_front(double v_end) {
         piece.where = std::move(s.where);
         piece.sequence_number = s.sequence_number;
         piece.blend = s.blend;
+        piece.continues_move = s.continues_move;
         piece.segment = s.path;
         piece.io = Io{};
         piece.waits_for_index = false;

@@ -74,6 +74,7 @@ struct WindowSegment {
     SourceLocation where;
     std::int64_t sequence_number = -1;
     bool blend = false;
+    bool continues_move = false;     //!< TrajectoryPiece::continues_move
     std::vector<WindowEvent> after;  //!< events between its end and the next segment
 };
 

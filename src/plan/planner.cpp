@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "arc_pieces.hpp"
 #include "junction.hpp"
 #include "lookahead.hpp"
 #include "transition.hpp"
@@ -61,8 +62,10 @@ struct Planner::Impl {
     bool have_position = false;               //!< a motion has told where the machine is
     std::vector<WindowEvent> leading_events;  //!< events before the first motion: place unknown
     Diagnostics diagnostics;
-    SpindleCommand spindle;         //!< the spindle as the moves pushed so far leave it
-    bool last_motion_sync = false;  //!< the last motion was G32/G33: a thread goes on at speed
+    SpindleCommand spindle;                         //!< the spindle as the moves pushed so far leave it
+    bool last_motion_sync = false;                  //!< the last motion was G32/G33: a thread goes on at speed
+    bool at_rest = true;                            //!< the last segment added to the window ends with a stop
+    std::vector<plan_detail::ArcPiece> arc_pieces;  //!< reused by release_pending
 
     Impl(MachineConfig m, PlannerOptions o)
         : machine(std::move(m)),
@@ -71,8 +74,10 @@ struct Planner::Impl {
           lookahead(kind, o.window_moves, machine.spindle) {}
 
     void add_segment(PathSegment path, const ProfileLimits& limits, double junction_max, const SourceLocation& where,
-                     std::int64_t sequence_number, bool blend, std::vector<WindowEvent> after) {
+                     std::int64_t sequence_number, bool blend, std::vector<WindowEvent> after,
+                     bool continues_move = false) {
         position = end_point(path);
+        at_rest = !(junction_max > 0);
         WindowSegment s;
         s.path = std::move(path);
         s.limits = limits;
@@ -80,12 +85,15 @@ struct Planner::Impl {
         s.where = where;
         s.sequence_number = sequence_number;
         s.blend = blend;
+        s.continues_move = continues_move;
         s.after = std::move(after);
         lookahead.add(std::move(s));
     }
 
-    //! The pending motion goes to the window, ending with junction limit junction_max.
-    void release_pending(double junction_max) {
+    //! The pending motion goes to the window, ending at rest when `stop`, else at most at its own
+    //! speed limit (the next segment's lowers it further). A trapezoid arc whose curvature sets
+    //! its speed goes as pieces with limits of their own (arc_pieces.hpp).
+    void release_pending(bool stop) {
         if (!pending) return;
         Pending& p = *pending;
         if (p.entry) {
@@ -96,11 +104,21 @@ struct Planner::Impl {
                         {});
             p.entry.reset();
         }
-        if (p.path.length > min_trimmed_length) {
-            add_segment(std::move(p.path), limits_of(p), junction_max, p.where, p.sequence_number, false,
-                        std::move(pending_events));
-        } else {
+        if (!(p.path.length > min_trimmed_length)) {
             for (WindowEvent& e : pending_events) lookahead.add_event(std::move(e), position);
+        } else if (kind == ProfileKind::trapezoid &&
+                   plan_detail::split_arc(p.path, machine, p.feed_mm_s, at_rest, stop, arc_pieces)) {
+            for (std::size_t k = 0; k < arc_pieces.size(); ++k) {
+                const bool last = k + 1 == arc_pieces.size();
+                const ProfileLimits& limits = arc_pieces[k].limits;
+                add_segment(std::move(arc_pieces[k].path), limits, last && stop ? 0.0 : limits.max_velocity, p.where,
+                            p.sequence_number, false, last ? std::move(pending_events) : std::vector<WindowEvent>{},
+                            k > 0);
+            }
+        } else {
+            const ProfileLimits limits = limits_of(p);
+            add_segment(std::move(p.path), limits, stop ? 0.0 : limits.max_velocity, p.where, p.sequence_number, false,
+                        std::move(pending_events));
         }
         pending_events.clear();
         pending = nullptr;
@@ -132,29 +150,29 @@ struct Planner::Impl {
             // a jerk limit needs the curvature continuous too (docs/planner.md).
             const bool jerk_limited = kind == ProfileKind::scurve;
             if (p.control.exact_stop) {
-                release_pending(0.0);
+                release_pending(true);
             } else if (jerk_limited
                            ? plan_detail::smooth_join(p.path, next.path, plan_detail::smooth_direction_tolerance, true)
                            : plan_detail::tangent(p.path, next.path)) {
-                release_pending(limits_of(p).max_velocity);
+                release_pending(false);
             } else if (p.blendable && next.blendable) {
                 const double tolerance =
                     p.control.tolerance_mm > 0 ? p.control.tolerance_mm : options.default_blend_tolerance_mm;
                 const bool rounded =
                     (!jerk_limited && blend_corner(p, next, tolerance)) || transition(p, next, tolerance);
                 if (!rounded) {
-                    release_pending(0.0);
+                    release_pending(true);
                 }
             } else {
-                release_pending(0.0);
+                release_pending(true);
             }
         }
         pending = &next;
     }
 
-    //! Trapezoid plans round a corner between two lines with a circular arc.
+    //! Trapezoid plans round a corner between two lines with a parabola (junction.hpp).
     bool blend_corner(Pending& p, Pending& next, double tolerance) {
-        auto blend = plan_detail::blend_lines(p.path, p.full_length, next.path, tolerance);
+        auto blend = plan_detail::parabolic_corner(p.path, p.full_length, next.path, tolerance);
         if (!blend) return false;
         p.path.length -= blend->trim_mm;
         insert_between(p, next, blend->arc, blend->trim_mm, trapezoid_blend_normal_share);
@@ -196,7 +214,7 @@ struct Planner::Impl {
         const SourceLocation where = p.where;
         const std::int64_t number = p.sequence_number;
         const double feed = std::min(p.feed_mm_s, next.feed_mm_s);
-        release_pending(p.path.length > min_trimmed_length ? limits_of(p).max_velocity : 0.0);
+        release_pending(false);
         next.path = trim_start(next.path, t.trim_after);
         next.entry_feed_mm_s = feed;
         next.entry_where = where;
@@ -211,7 +229,7 @@ struct Planner::Impl {
             segment_limits(curve, machine, std::min(p.feed_mm_s, next.feed_mm_s), kind, normal_share);
         const SourceLocation where = p.where;
         const std::int64_t number = p.sequence_number;
-        release_pending(limits_of(p).max_velocity);
+        release_pending(false);
         add_segment(curve, limits, limits.max_velocity, where, number, true, {});
         next.path = trim_start(next.path, trim_after);
     }
@@ -237,7 +255,7 @@ struct Planner::Impl {
 
     void motion(PathSegment path, double feed_mm_s, bool blendable, PathControl control, const Move& move) {
         if (!(path.length > min_move_length)) {
-            if (control.exact_stop) release_pending(0.0);
+            if (control.exact_stop) release_pending(true);
             return;
         }
         if (!(feed_mm_s > 0)) {
@@ -273,7 +291,7 @@ struct Planner::Impl {
     }
 
     void event(WindowEvent e, bool stop) {
-        if (stop) release_pending(0.0);
+        if (stop) release_pending(true);
         if (!have_position) {
             leading_events.push_back(std::move(e));
         } else if (pending) {
@@ -326,7 +344,7 @@ struct Planner::Impl {
             return;
         }
         if (!after_sync) {
-            release_pending(0.0);
+            release_pending(true);
             WindowEvent wait;
             wait.kind = PieceKind::dwell;
             wait.wait_index = true;
@@ -401,7 +419,7 @@ void Planner::push(const Move& move) {
 }
 
 void Planner::finish() {
-    impl_->release_pending(0.0);
+    impl_->release_pending(true);
     impl_->locate(impl_->position);  // events of a program without motion: at the origin
     impl_->lookahead.finish();
 }

@@ -168,7 +168,19 @@ struct ToolPathRecorder::Impl {
     void add_piece(const TrajectoryPiece& piece) {
         peaks.add(piece);
         sampler.add(piece);
-        if (piece.kind == PieceKind::motion && !piece.blend) {
+        if (piece.kind == PieceKind::motion && piece.continues_move && open) {
+            // More of the open move (a trapezoid arc planned in pieces).
+            const report_detail::PiecePoints pts = report_detail::piece_points(piece, options.arc_step_deg);
+            open->points.insert(open->points.end(), pts.points.begin() + 1, pts.points.end());
+            ReportMove& m = report.moves[open->index];
+            m.peak_mm_s = std::max(m.peak_mm_s, pts.peak_mm_s);
+            open->facts.peak_mm_s = std::max(open->facts.peak_mm_s, pts.peak_mm_s);
+            open->facts.end_mm_s = pts.end_mm_s;
+            if (m.feed_mm_s > 0) {
+                open->facts.limit_mm_s = std::max(
+                    open->facts.limit_mm_s, segment_limits(piece.segment, machine, m.feed_mm_s, kind).max_velocity);
+            }
+        } else if (piece.kind == PieceKind::motion && !piece.blend) {
             main_piece(piece);
         } else if (piece.kind == PieceKind::motion) {
             boundary = Junction::corner;

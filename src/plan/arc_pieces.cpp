@@ -1,0 +1,133 @@
+#include "arc_pieces.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace nckit::plan_detail {
+
+namespace {
+
+constexpr double inf = std::numeric_limits<double>::infinity();
+//! An arc whose curvature term d2·F² takes at most this share of every axis's acceleration
+//! stays whole: its speed is the feed almost everywhere, and its acceleration most of amax.
+constexpr double split_normal_share = 0.1;
+//! Each piece keeps at least this share of the path acceleration its axes allow (so a > 0 and
+//! the speed can still change on it): its speed limit is then about 0.99 of the pointwise one.
+constexpr double floor_tangential_share = 0.02;
+
+struct PieceBounds {
+    DerivativeBounds b;
+    double length = 0;
+    double v = 0;  //!< mm/s, the speed limit being chosen
+};
+
+//! The path acceleration piece `p` allows at speed v: min over axes of (amax − d2·v²)/d1.
+double acceleration_at(const PieceBounds& p, const MachineConfig& machine, double v) {
+    double a = inf;
+    for (const AxisConfig& axis : machine.axes) {
+        const std::size_t i = index(axis.axis);
+        if (p.b.d1[i] > 0) a = std::min(a, (axis.max_acceleration - p.b.d2[i] * v * v) / p.b.d1[i]);
+    }
+    return a;
+}
+
+//! The highest v² reachable over the piece from (or braking to) the speed whose square is
+//! `edge2`, when the piece's acceleration is what its own limit v leaves:
+//! v² <= edge2 + 2·len·(amax − d2·v²)/d1 on every axis, i.e.
+//! v² <= (edge2 + 2·len·amax/d1) / (1 + 2·len·d2/d1).
+double reachable_speed2(const PieceBounds& p, const MachineConfig& machine, double edge2) {
+    double v2 = inf;
+    for (const AxisConfig& axis : machine.axes) {
+        const std::size_t i = index(axis.axis);
+        const double d1 = p.b.d1[i];
+        if (d1 > 0) {
+            const double twice = 2.0 * p.length;
+            v2 = std::min(v2, (edge2 + twice * axis.max_acceleration / d1) / (1.0 + twice * p.b.d2[i] / d1));
+        }
+    }
+    return v2;
+}
+
+//! The speed limit of a piece before the passes: feed, axis speeds, and the curvature term
+//! leaving floor_tangential_share of the path acceleration.
+double top_speed(const DerivativeBounds& b, const MachineConfig& machine, double feed_mm_s) {
+    double v = feed_mm_s / b.speed_factor;
+    double a_floor = inf;
+    for (const AxisConfig& axis : machine.axes) {
+        const std::size_t i = index(axis.axis);
+        if (b.d1[i] > 0) {
+            v = std::min(v, axis.max_velocity / b.d1[i]);
+            a_floor = std::min(a_floor, floor_tangential_share * axis.max_acceleration / b.d1[i]);
+        }
+    }
+    for (const AxisConfig& axis : machine.axes) {
+        const std::size_t i = index(axis.axis);
+        if (b.d2[i] > 0) {
+            const double room = axis.max_acceleration - b.d1[i] * a_floor;
+            v = std::min(v, std::sqrt(std::max(0.0, room) / b.d2[i]));
+        }
+    }
+    return std::isfinite(v) ? v : 0.0;
+}
+
+bool curvature_matters(const PathSegment& arc, const MachineConfig& machine, double feed_mm_s) {
+    const DerivativeBounds b = derivative_bounds(arc);
+    double v = feed_mm_s / b.speed_factor;
+    for (const AxisConfig& axis : machine.axes) {
+        const std::size_t i = index(axis.axis);
+        if (b.d1[i] > 0) v = std::min(v, axis.max_velocity / b.d1[i]);
+    }
+    for (const AxisConfig& axis : machine.axes) {
+        const std::size_t i = index(axis.axis);
+        if (b.d2[i] * v * v > split_normal_share * axis.max_acceleration) return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+bool split_arc(const PathSegment& arc, const MachineConfig& machine, double feed_mm_s, bool starts_at_rest,
+               bool ends_at_rest, std::vector<ArcPiece>& out) {
+    if (arc.shape != SegmentShape::arc || !(arc.length > 0)) return false;
+    const double turns = std::abs(arc.sweep_rad()) / (2.0 * M_PI);
+    const int n = static_cast<int>(std::min<double>(max_arc_pieces, std::ceil(turns * arc_pieces_per_turn)));
+    if (n < 2 || !curvature_matters(arc, machine, feed_mm_s)) return false;
+
+    const double piece_length = arc.length / n;
+    out.resize(static_cast<std::size_t>(n));
+    std::vector<PieceBounds> pieces(static_cast<std::size_t>(n));
+    for (int k = 0; k < n; ++k) {
+        ArcPiece& piece = out[static_cast<std::size_t>(k)];
+        const double start = k * piece_length;
+        piece.path = trim_start(arc, start);
+        piece.path.length = k + 1 == n ? arc.length - start : piece_length;
+        PieceBounds& p = pieces[static_cast<std::size_t>(k)];
+        p.b = derivative_bounds(piece.path);
+        p.length = piece.path.length;
+        p.v = top_speed(p.b, machine, feed_mm_s);
+    }
+    // Forward: a piece entered below its limit must reach it with the acceleration that limit
+    // leaves; where it cannot, its limit drops to the highest speed it reaches (which maximises
+    // its exit speed: a lower limit leaves more acceleration). Backward likewise for braking.
+    // Both passes only lower limits, so the forward pass's conditions still hold after the other.
+    double entry = starts_at_rest ? 0.0 : inf;
+    for (PieceBounds& p : pieces) {
+        if (entry < p.v) p.v = std::min(p.v, std::sqrt(reachable_speed2(p, machine, entry * entry)));
+        entry = p.v;
+    }
+    double exit = ends_at_rest ? 0.0 : inf;
+    for (auto it = pieces.rbegin(); it != pieces.rend(); ++it) {
+        if (exit < it->v) it->v = std::min(it->v, std::sqrt(reachable_speed2(*it, machine, exit * exit)));
+        exit = it->v;
+    }
+    for (std::size_t k = 0; k < pieces.size(); ++k) {
+        const PieceBounds& p = pieces[k];
+        out[k].limits.max_velocity = p.v;
+        out[k].limits.max_acceleration = acceleration_at(p, machine, p.v);
+        out[k].limits.max_jerk = inf;
+    }
+    return true;
+}
+
+}  // namespace nckit::plan_detail
