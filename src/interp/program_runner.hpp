@@ -56,6 +56,8 @@ public:
     [[nodiscard]] std::uint64_t main_program_offset() const { return sources_.empty() ? 0 : sources_[0].next_offset(); }
 
     [[nodiscard]] ModalView modal_view() const { return executor_.modal_view(); }
+    [[nodiscard]] std::uint64_t retained_writes() const { return variables_.retained_writes(); }
+    [[nodiscard]] std::vector<RetainedVariable> retained_values() const;
 
     [[nodiscard]] std::optional<MacroValue> read_system(std::int64_t number) const override;
     [[nodiscard]] std::optional<SystemVariables::WriteError> write_system(std::int64_t number, double value) override;
