@@ -224,20 +224,22 @@ Result<RestartReport> write_restart(Interpreter& interpreter, const RestartTarge
                            report.sequence_number >= 0 ? fmt::format(" N{}", report.sequence_number) : std::string(),
                            report.block);
             writer.append_header(out, source_name);
-            frame_comments(out, report.state, machine);
+            const bool in_frame = frame_can_be_set(report.state, machine);
+            frame_comments(out, report.state, machine, in_frame);
             if (settings.retained_at_target) {
                 out += "( retained variables as the interrupted run left them )\n";
                 retained_assignments(out, {}, retained);
             }
             io_blocks(out, report.io);
             if (a.moves) approach_blocks(out, a, machine, decimals, report.worst_deviation_mm);
+            if (in_frame) frame_blocks(out, report.state, machine, a.moves ? &a.point : nullptr);
             for (int m : report.io.laser_on) fmt::format_to(std::back_inserter(out), "M{}\n", m);
             const ModalView& s = report.state;
             fmt::format_to(std::back_inserter(out), "{} {}", plane_code(s.plane), feed_mode_code(s.feed_mode, machine));
-            if (s.feed > 0) {
-                out += " F";
-                append_exact(out, s.feed);
-            }
+            // F0 too: the approach's feed must not stay in force.
+            out += " F";
+            append_exact(out, in_frame ? s.feed / s.length_factor_mm : s.feed);
+            if (in_frame && s.incremental) out += " G91";
             if (s.path.exact_stop) {
                 out += " G61";
             } else if (s.path.tolerance_mm > 0) {
@@ -247,7 +249,8 @@ Result<RestartReport> write_restart(Interpreter& interpreter, const RestartTarge
                 out += " G64";
             }
             out += "\n( the rest of the program from the target on )\n";
-            writer.assume_modes(s.plane, s.feed_mode, s.feed > 0 ? s.feed : -1, s.path);
+            writer.assume_modes(s.plane, s.feed_mode, s.feed, s.path);
+            if (in_frame) writer.use_frame(program_frame(s, machine), a.point);
             report.rest_line = line_count(out) + 1;
         }
         // After a journal, #500-#999 go on changing as the original run changed them.

@@ -69,7 +69,7 @@ const char* plane_code(Plane plane) {
 
 //! The comment lines that record the program's own frame at the target: the moves below carry
 //! it already (machine coordinates), so it is written for the operator, not set again.
-void frame_comments(std::string& out, const ModalView& s, const MachineConfig& machine) {
+void frame_comments(std::string& out, const ModalView& s, const MachineConfig& machine, bool set_again) {
     auto vector_text = [&](const AxisVector& v) {
         std::string text;
         for (const AxisConfig& axis : machine.axes) {
@@ -87,7 +87,8 @@ void frame_comments(std::string& out, const ModalView& s, const MachineConfig& m
     fmt::format_to(std::back_inserter(out), "( tool length G{}{} H{}{}{} )\n", s.length_offset_code / 10,
                    s.length_offset_code % 10 != 0 ? ".1" : "", s.length_offset_h, vector_text(s.tool_offset),
                    s.transform_active ? ", mirror/scaling/rotation in force" : "");
-    out += "( positions below are machine coordinates with all of these applied )\n";
+    out += set_again ? "( set again after the approach; the rest is written in this frame )\n"
+                     : "( positions below are machine coordinates with all of these applied )\n";
 }
 
 void io_blocks(std::string& out, const RestartIo& io) {
@@ -146,6 +147,76 @@ void approach_blocks(std::string& out, RestartApproach& a, const MachineConfig& 
     out += " F";
     append_exact(out, a.feed_mm_min);
     out += '\n';
+}
+
+bool frame_can_be_set(const ModalView& s, const MachineConfig& machine) {
+    return !s.transform_active && !s.diameter_mode && !machine.diameter_mode &&
+           machine.gcode_system != GCodeSystem::a && s.work_system < 6;
+}
+
+GcodeFrame program_frame(const ModalView& s, const MachineConfig& machine) {
+    GcodeFrame frame;
+    for (const AxisConfig& axis : machine.axes) {
+        const Axis a = axis.axis;
+        frame.origin_mm[a] = s.work_offset[a] + s.g92_offset[a] + s.g52_offset[a] + s.tool_offset[a];
+    }
+    frame.length_factor_mm = s.length_factor_mm;
+    frame.incremental = s.incremental;
+    return frame;
+}
+
+namespace {
+
+//! " X1.5 Y0 Z-2" of `v` in program units (rotary axes as they are); nothing when all are zero
+//! and `skip_zero`.
+std::string program_words(const AxisVector& v, const ModalView& s, const MachineConfig& machine, bool skip_zero) {
+    std::string words;
+    bool any = false;
+    for (const AxisConfig& axis : machine.axes) {
+        const double factor = axis.kind == AxisKind::rotary ? 1.0 : s.length_factor_mm;
+        any = any || v[axis.axis] != 0.0;
+        words += ' ';
+        words += letter(axis.axis);
+        append_exact(words, v[axis.axis] / factor);
+    }
+    return skip_zero && !any ? std::string() : words;
+}
+
+}  // namespace
+
+void frame_blocks(std::string& out, const ModalView& s, const MachineConfig& machine, const AxisVector* point) {
+    out += "( the program's frame at the target )\n";
+    out += s.length_factor_mm == 1.0 ? "G21\n" : "G20\n";
+    fmt::format_to(std::back_inserter(out), "G10 L2 P{}{}\n", s.work_system + 1,
+                   program_words(s.work_offset, s, machine, false));
+    fmt::format_to(std::back_inserter(out), "G{}\n", 54 + s.work_system);
+    if (const std::string words = program_words(s.g52_offset, s, machine, true); !words.empty()) {
+        out += "G52" + words + '\n';
+    }
+    switch (s.length_offset_code) {
+        case 430:
+            fmt::format_to(std::back_inserter(out), "G43 H{}\n", s.length_offset_h);
+            break;
+        case 440:
+            fmt::format_to(std::back_inserter(out), "G44 H{}\n", s.length_offset_h);
+            break;
+        case 431:
+            out += "G43.1" + program_words(s.tool_offset, s, machine, false) + '\n';
+            break;
+        default:
+            break;  // G49, as the header left it
+    }
+    bool g92 = false;
+    for (const AxisConfig& axis : machine.axes) g92 = g92 || s.g92_offset[axis.axis] != 0.0;
+    if (g92 && point != nullptr) {
+        // G92 makes the point the tool stands at read as the program read it.
+        AxisVector reads;
+        for (const AxisConfig& axis : machine.axes) {
+            const Axis a = axis.axis;
+            reads[a] = (*point)[a] - s.work_offset[a] - s.g52_offset[a] - s.tool_offset[a] - s.g92_offset[a];
+        }
+        out += "G92" + program_words(reads, s, machine, false) + '\n';
+    }
 }
 
 }  // namespace nckit::restart_detail
