@@ -1,6 +1,7 @@
-// nckit restart PROGRAM --seq N[:k] | --line L | --block B: a program that picks up the run at
-// the target block (docs/restart.md). The logic is nckit::write_restart; this file parses the
-// target, writes the file and prints the report.
+// nckit restart PROGRAM --seq N[:k] | --line L[:k] | --block B | --journal FILE: a program that
+// picks up the run at the target block (docs/restart.md). The logic is nckit::write_restart and
+// nckit::write_journal_restart; this file parses the target, writes the file and prints the
+// report.
 #include <charconv>
 #include <cstdio>
 #include <iterator>
@@ -9,6 +10,7 @@
 
 #include "common.hpp"
 #include "nckit/interp/restart.hpp"
+#include "nckit/pipeline/journal_restart.hpp"
 #include "partial_file.hpp"
 #include "verbs.hpp"
 
@@ -20,21 +22,22 @@ struct RestartOptions {
     std::string program;
     std::string output;
     std::string seq;
-    std::int64_t line = 0;
+    std::string line;
+    std::string journal;
     std::int64_t block = 0;
     int decimals = -1;
     bool json = false;
     MachineOptions machine;
 };
 
-//! "N" or "N:k" (k-th time N is reached), both positive integers; nothing when malformed.
-std::optional<RestartTarget> parse_seq(const std::string& text) {
+//! "N" or "N:k" (k-th time N is reached), whole numbers, k >= 1; nothing when malformed.
+std::optional<RestartTarget> parse_occurrence(const std::string& text, RestartTarget::Kind kind) {
     RestartTarget target;
-    target.kind = RestartTarget::Kind::sequence;
+    target.kind = kind;
     const char* begin = text.data();
     const char* end = begin + text.size();
     auto [p, error] = std::from_chars(begin, end, target.number);
-    if (error != std::errc{} || target.number < 0) return std::nullopt;
+    if (error != std::errc{} || target.number < (kind == RestartTarget::Kind::line ? 1 : 0)) return std::nullopt;
     if (p != end) {
         if (*p != ':') return std::nullopt;
         auto [q, error2] = std::from_chars(p + 1, end, target.occurrence);
@@ -52,7 +55,7 @@ std::string vector_json(const AxisVector& v, const MachineConfig& machine) {
     return out + "}";
 }
 
-std::string report_json(const RestartReport& r, const MachineConfig& machine) {
+std::string report_json(const RestartReport& r, const MachineConfig& machine, const JournalContents* journal) {
     const ModalView& s = r.state;
     std::string out;
     auto o = std::back_inserter(out);
@@ -93,16 +96,46 @@ std::string report_json(const RestartReport& r, const MachineConfig& machine) {
                    "\"takeup_mm\":{},\"clearance_mm\":{},\"feed_mm_min\":{}}}",
                    a.moves, letter(a.retract_axis), json_number(a.safe_mm), vector_json(a.point, machine), sides,
                    json_number(a.takeup_mm), json_number(a.clearance_mm), json_number(a.feed_mm_min));
-    fmt::format_to(o, ",\"worst_deviation_mm\":{}}}\n", json_number(r.worst_deviation_mm));
+    fmt::format_to(o, ",\"worst_deviation_mm\":{}", json_number(r.worst_deviation_mm));
+    if (journal != nullptr) {
+        std::string retained;
+        for (const RetainedVariable& v : r.retained) {
+            retained += fmt::format("{}\"{}\":{}", retained.empty() ? "" : ",", v.number, json_number(v.value));
+        }
+        fmt::format_to(o, ",\"journal\":{{\"records\":{},\"last_block\":{},\"ignored_bytes\":{},\"retained\":{{{}}}}}",
+                       journal->records, journal->last ? std::to_string(journal->last->block) : "null",
+                       journal->ignored_bytes, retained);
+    }
+    out += "}\n";
     return out;
 }
 
-int run_restart(const RestartOptions& options, const RestartTarget& target) {
+int run_restart(const RestartOptions& options, const std::optional<RestartTarget>& target) {
+    std::optional<JournalContents> journal;
+    MachineOptions machine = options.machine;
+    if (!target) {
+        auto read = read_journal(options.journal);
+        if (!read) {
+            print_diagnostics(read.diagnostics());
+            return exit_bad_input;
+        }
+        journal = std::move(read).value();
+        // The search starts from #500-#999 as the interrupted run found them, not the live file.
+        machine.retained_start = journal->header.retained_start;
+    }
     // Searching is not running: #500-#999 stay as the file holds them.
-    auto interpreter = open_program_or_report(options.program, options.machine, false);
+    auto interpreter = open_program_or_report(options.program, machine, false);
     if (!interpreter) return exit_bad_input;
+    if (journal) {
+        if (auto mismatch = check_journal_matches(*journal, options.program, interpreter->machine())) {
+            print_diagnostic(*mismatch);
+            return exit_bad_input;
+        }
+    }
     std::string text;
-    Result<RestartReport> report = write_restart(*interpreter, target, options.program, text, options.decimals);
+    Result<RestartReport> report =
+        journal ? write_journal_restart(*interpreter, *journal, options.program, text, options.decimals)
+                : write_restart(*interpreter, *target, options.program, text, RestartSettings{options.decimals, {}});
     if (!report) {
         print_diagnostics(report.diagnostics());
         return exit_bad_input;
@@ -115,7 +148,8 @@ int run_restart(const RestartOptions& options, const RestartTarget& target) {
         std::fwrite(text.data(), 1, text.size(), file->get());
         if (!file->commit()) return exit_bad_input;
     }
-    if (options.json) std::fputs(report_json(*report, interpreter->machine()).c_str(), stdout);
+    if (options.json)
+        std::fputs(report_json(*report, interpreter->machine(), journal ? &*journal : nullptr).c_str(), stdout);
     if (options.decimals >= 0 && !options.json) {
         fmt::print(stderr, "restart: coordinates rounded to {} decimals, worst deviation {} mm\n", options.decimals,
                    json_number(report->worst_deviation_mm));
@@ -132,23 +166,26 @@ void add_restart_verb(CLI::App& app, int& exit_status) {
     verb->add_option("PROGRAM", options->program, "NC program")->required();
     CLI::Option* seq =
         verb->add_option("--seq", options->seq, "restart at sequence number N (N:k: the k-th time it is reached)");
-    CLI::Option* line =
-        verb->add_option("--line", options->line, "restart at the first block run from this line of PROGRAM")
-            ->check(CLI::PositiveNumber);
+    CLI::Option* line = verb->add_option(
+        "--line", options->line, "restart at the first block run from this line of PROGRAM (L:k: the k-th time)");
     CLI::Option* block =
         verb->add_option("--block", options->block, "restart at the B-th executed block that moves (1-based)")
             ->check(CLI::PositiveNumber);
-    seq->excludes(line)->excludes(block);
-    line->excludes(block);
+    CLI::Option* journal =
+        verb->add_option("--journal", options->journal,
+                         "restart after the last block a run journal (steps/servo --journal) records as done");
+    seq->excludes(line)->excludes(block)->excludes(journal);
+    line->excludes(block)->excludes(journal);
+    block->excludes(journal);
     verb->add_option("-o,--output", options->output, "write the restart program here (default: standard output)");
     verb->add_option("--decimals", options->decimals, "round coordinates to N decimals (default: exact)")
         ->check(CLI::Range(0, 17));
     verb->add_flag("--json", options->json, "print the target, the state rebuilt and the approach as JSON");
     add_machine_options(*verb, options->machine);
-    verb->callback([options, seq, line, block, &exit_status] {
+    verb->callback([options, seq, line, block, journal, &exit_status] {
         std::optional<RestartTarget> target;
         if (seq->count() > 0) {
-            target = parse_seq(options->seq);
+            target = parse_occurrence(options->seq, RestartTarget::Kind::sequence);
             if (!target) {
                 fmt::print(stderr, "nckit restart: error: --seq wants N or N:k with whole numbers (k >= 1), not '{}'\n",
                            options->seq);
@@ -156,15 +193,24 @@ void add_restart_verb(CLI::App& app, int& exit_status) {
                 return;
             }
         } else if (line->count() > 0) {
-            target = RestartTarget{RestartTarget::Kind::line, options->line, 1};
+            target = parse_occurrence(options->line, RestartTarget::Kind::line);
+            if (!target) {
+                fmt::print(stderr,
+                           "nckit restart: error: --line wants L or L:k with whole numbers (L, k >= 1), not '{}'\n",
+                           options->line);
+                exit_status = exit_bad_input;
+                return;
+            }
+        } else if (journal->count() > 0) {
+            // The target comes from the journal.
         } else if (block->count() > 0) {
             target = RestartTarget{RestartTarget::Kind::block, options->block, 1};
         } else {
-            fmt::print(stderr, "nckit restart: error: name the target with --seq, --line or --block\n");
+            fmt::print(stderr, "nckit restart: error: name the target with --seq, --line, --block or --journal\n");
             exit_status = exit_bad_input;
             return;
         }
-        exit_status = run_restart(*options, *target);
+        exit_status = run_restart(*options, target);
     });
 }
 

@@ -15,6 +15,7 @@
 #include <fmt/format.h>
 
 #include "common.hpp"
+#include "journal_options.hpp"
 #include "partial_file.hpp"
 #include "plan_stream.hpp"
 #include "nckit/drive/servo_follow.hpp"
@@ -30,6 +31,7 @@ struct ServoOptions {
     MachineOptions machine;
     bool json = false;
     std::string trace;
+    JournalCliOptions journal;
 };
 
 void print_report(const ServoOptions& options, const MachineConfig& machine, const drive::ServoFollowReport& report) {
@@ -68,6 +70,8 @@ int run_servo(const ServoOptions& options) {
                    options.machine.machine.empty() ? "nckit" : options.machine.machine, machine.name);
         return exit_bad_input;
     }
+    std::optional<RunJournal> journal;
+    if (!open_journal_or_report(options.journal, *interpreter, options.program, journal)) return exit_bad_input;
     Planner planner(machine);
     std::optional<PartialFile> trace_file;
     std::string trace_text;
@@ -87,8 +91,9 @@ int run_servo(const ServoOptions& options) {
         };
     }
     // A bad program reports nothing: returning drops the unfinished trace with its PartialFile.
-    if (!plan_program(
-            *interpreter, planner, [&](const TrajectoryPiece& piece) { follower.add(piece, sink); }, {}, &progress)) {
+    const ProgramPlanCallbacks callbacks =
+        journal_callbacks(journal, *interpreter, [&](const TrajectoryPiece& piece) { follower.add(piece, sink); });
+    if (!plan_program(*interpreter, planner, callbacks.on_piece, callbacks.on_move, &progress)) {
         return exit_bad_input;
     }
     follower.finish(sink);
@@ -96,6 +101,7 @@ int run_servo(const ServoOptions& options) {
         trace_file->write(trace_text);
         if (!trace_file->commit()) return exit_bad_input;
     }
+    if (!finish_journal_or_report(journal)) return exit_bad_input;
     print_report(options, machine, follower.report());
     return 0;
 }
@@ -108,6 +114,7 @@ void add_servo_verb(CLI::App& app, int& exit_status) {
         app.add_subcommand("servo", "Drive the servo axes with a program's setpoints: each axis's following error");
     verb->add_option("FILE", options->program, "NC program ('-': standard input)")->required();
     add_machine_options(*verb, options->machine);
+    add_journal_options(*verb, options->journal);
     verb->add_flag("--json", options->json, "print the report as one JSON object");
     verb->add_option("--trace", options->trace,
                      "write every sample as CSV: t_s,axis,setpoint_mm,actual_mm,following_error_mm");

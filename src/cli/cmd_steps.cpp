@@ -23,6 +23,7 @@
 #include <fmt/format.h>
 
 #include "common.hpp"
+#include "journal_options.hpp"
 #include "partial_file.hpp"
 #include "plan_stream.hpp"
 #include "step_record.hpp"
@@ -43,6 +44,7 @@ struct StepsOptions {
     bool text = false;
     std::string compress_text;  // --compress's value, empty for the default
     double compress_us = -1;    // < 0: no compression
+    JournalCliOptions journal;
 };
 
 // Bytes for the output, flushed as they grow: memory stays bounded however long the program.
@@ -82,6 +84,8 @@ int run_steps(const StepsOptions& options) {
     Planner planner(machine);
     StepGenerator steps(machine);
 
+    std::optional<RunJournal> journal;
+    if (!open_journal_or_report(options.journal, *interpreter, options.program, journal)) return exit_bad_input;
     std::optional<PartialFile> file = PartialFile::create(options.output.empty() ? "-" : options.output);
     if (!file) return exit_bad_input;
     // A bad program leaves no -o file: returning drops the unfinished output with its PartialFile.
@@ -118,7 +122,8 @@ int run_steps(const StepsOptions& options) {
         steps.add(piece);
         while (steps.pop(event)) write(event);
     };
-    if (!plan_program(*interpreter, planner, on_piece, {}, &progress)) {
+    const ProgramPlanCallbacks callbacks = journal_callbacks(journal, *interpreter, on_piece);
+    if (!plan_program(*interpreter, planner, callbacks.on_piece, callbacks.on_move, &progress)) {
         if (file->is_stdout()) out.flush();  // what came before the error, as `moves` prints it
         return exit_bad_input;
     }
@@ -130,6 +135,7 @@ int run_steps(const StepsOptions& options) {
     }
     out.flush();
     if (!file->commit()) return exit_bad_input;
+    if (!finish_journal_or_report(journal)) return exit_bad_input;
     if (queue) {
         fmt::print(stderr, "steps: {} runs: {} compression ratio: {:.2f}\n", queue->steps(), queue->runs(),
                    queue->compression_ratio());
@@ -144,6 +150,7 @@ void add_steps_verb(CLI::App& app, int& exit_status) {
     CLI::App* verb = app.add_subcommand("steps", "Generate the exact step/direction events of a program");
     verb->add_option("FILE", options->program, "NC program ('-': standard input)")->required();
     add_machine_options(*verb, options->machine);
+    add_journal_options(*verb, options->journal);
     verb->add_option("-o,--output", options->output, "output file; '-': standard output (the default)");
     verb->add_flag("--text", options->text, "one step a line: t_ns axis dir, and the port byte on phase-table axes");
     auto* compress =

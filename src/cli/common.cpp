@@ -181,6 +181,7 @@ std::optional<Interpreter> open_program_or_report(const std::string& program_pat
     interpreter.max_blocks = options.max_blocks;
     interpreter.save_retained = keep_retained;
     interpreter.keep_going_after_errors = options.keep_going;
+    interpreter.retained_start = options.retained_start;
     interpreter.on_warning = [](const Diagnostic& warning) { print_diagnostic(warning); };
     if (!options.vars.empty()) {
         interpreter.retained_file = options.vars;

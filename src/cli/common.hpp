@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "nckit/core/machine.hpp"
 #include "nckit/interp/interpreter.hpp"
@@ -26,6 +27,8 @@ struct MachineOptions {
     bool block_delete = false;
     bool quiet = false;       //!< --quiet: no progress on stderr
     bool keep_going = false;  //!< report a block's error and go on (nckit check)
+    //! #500-#999 to start with instead of the --vars file's (restart --journal); not an option.
+    std::optional<std::vector<RetainedVariable>> retained_start;
 };
 
 void add_machine_options(CLI::App& verb, MachineOptions& options);

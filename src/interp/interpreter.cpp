@@ -93,6 +93,14 @@ void Interpreter::set_position(const AxisVector& machine) {
     }
 }
 
+std::uint64_t Interpreter::retained_writes() const {
+    return state_->runner ? state_->runner->retained_writes() : 0;
+}
+
+std::vector<RetainedVariable> Interpreter::retained_values() const {
+    return state_->runner ? state_->runner->retained_values() : std::vector<RetainedVariable>{};
+}
+
 InterpResult Interpreter::next() {
     State& s = *state_;
     while (s.next_pending == s.pending.size()) {

@@ -78,22 +78,31 @@ void GcodeWriter::append_header(std::string& out, const std::string& source_name
     if (machine_.diameter_mode) out += "G8\n";
 }
 
-void GcodeWriter::number(std::string& out, char letter, double value) {
+void GcodeWriter::number(std::string& out, char letter, double value, double scale_mm) {
     out += ' ';
     out += letter;
     if (decimals_ < 0) {
         append_exact(out, value);
     } else {
-        worst_deviation_mm_ = std::max(worst_deviation_mm_, append_rounded(out, value, decimals_));
+        worst_deviation_mm_ = std::max(worst_deviation_mm_, append_rounded(out, value, decimals_) * scale_mm);
     }
+}
+
+double GcodeWriter::length_factor(Axis axis) const {
+    const AxisConfig* config = machine_.find(axis);
+    return config != nullptr && config->kind == AxisKind::rotary ? 1.0 : frame_.length_factor_mm;
 }
 
 void GcodeWriter::append_axes(std::string& out, const AxisVector& position) {
     for (std::size_t i = 0; i < axis_count; ++i) {
         auto axis = static_cast<Axis>(i);
         if (machine_.find(axis) == nullptr) continue;
-        number(out, letter(axis), position[axis]);
+        const double factor = length_factor(axis);
+        double value = (position[axis] - frame_.origin_mm[axis]) / factor;
+        if (frame_.incremental) value -= (last_[axis] - frame_.origin_mm[axis]) / factor;
+        number(out, letter(axis), value, factor);
     }
+    last_ = position;
 }
 
 void GcodeWriter::append_feed(std::string& out, const Feed& feed) {
@@ -108,7 +117,7 @@ void GcodeWriter::append_feed(std::string& out, const Feed& feed) {
         // Feeds are never rounded: no input increment applies to them, and under G95 or in a
         // thread an error is multiplied by the rpm or the turns.
         out += " F";
-        append_exact(out, value);
+        append_exact(out, value / frame_.length_factor_mm);
         feed_ = value;
     }
 }
@@ -147,14 +156,15 @@ void GcodeWriter::append(std::string& out, const Move& move) {
                 append_axes(out, m.to);
                 PlaneAxes p = plane_axes(m.plane);
                 for (Axis axis : {p.first, p.second}) {
-                    number(out, offset_letter(axis), m.center[axis] - m.from[axis]);
+                    number(out, offset_letter(axis), (m.center[axis] - m.from[axis]) / length_factor(axis),
+                           length_factor(axis));
                 }
                 append_feed(out, m.feed);
             } else if constexpr (std::is_same_v<T, SyncMove>) {
                 out += "G33";
                 append_axes(out, m.to);
                 out += " K";  // the lead, mm/rev (LinuxCNC and nckit read K), never rounded
-                append_exact(out, m.feed.mm_per_rev);
+                append_exact(out, m.feed.mm_per_rev / frame_.length_factor_mm);
             } else if constexpr (std::is_same_v<T, Dwell>) {
                 out += "G4 P";
                 append_exact(out, m.seconds * 1000.0);

@@ -67,7 +67,15 @@ ProgramRunner::ProgramRunner(const MachineConfig& machine, ProgramSource main, c
     executor_.set_sequence_reader(
         [this](std::int64_t p, std::int64_t q, std::vector<Block>& out) { return read_sequence(p, q, out); });
     if (auto error = executor_.start()) startup_error_ = std::move(*error);
-    if (!startup_error_ && !options_.retained_file.empty()) {
+    if (!startup_error_ && options_.retained_start) {
+        RetainedValues values{};
+        for (const RetainedVariable& v : *options_.retained_start) {
+            if (v.number >= first_retained && v.number <= last_retained) {
+                values[static_cast<std::size_t>(v.number - first_retained)] = MacroValue::of(v.value);
+            }
+        }
+        variables_.set_retained(values);
+    } else if (!startup_error_ && !options_.retained_file.empty()) {
         auto retained = load_retained(options_.retained_file);
         if (retained) {
             variables_.set_retained(*retained);
@@ -83,8 +91,18 @@ Diagnostic ProgramRunner::alarm_at(const Block& block, std::uint32_t column, int
     return d;
 }
 
+std::vector<RetainedVariable> ProgramRunner::retained_values() const {
+    std::vector<RetainedVariable> out;
+    const RetainedValues& values = variables_.retained();
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        if (!values[i].vacant) out.push_back({first_retained + static_cast<int>(i), values[i].number});
+    }
+    return out;
+}
+
 std::optional<Diagnostic> ProgramRunner::save_retained() const {
-    if (options_.retained_file.empty() || !options_.save_retained || !variables_.retained_changed()) {
+    if (options_.retained_start || options_.retained_file.empty() || !options_.save_retained ||
+        !variables_.retained_changed()) {
         return std::nullopt;
     }
     return interp::save_retained(options_.retained_file, variables_.retained());

@@ -62,6 +62,8 @@ public:
     [[nodiscard]] const std::string& current_file() const { return *sources_[frames_.size() - 1].file(); }
     void append_main(std::string_view text) { sources_[0].append(text); }
     void set_position(const AxisVector& machine) { executor_.set_position(machine); }
+    [[nodiscard]] std::uint64_t retained_writes() const { return variables_.retained_writes(); }
+    [[nodiscard]] std::vector<RetainedVariable> retained_values() const;
 
     [[nodiscard]] std::optional<MacroValue> read_system(std::int64_t number) const override;
     [[nodiscard]] std::optional<SystemVariables::WriteError> write_system(std::int64_t number, double value) override;

@@ -1,6 +1,7 @@
 #include "nckit/interp/restart.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <filesystem>
 #include <iterator>
@@ -12,23 +13,18 @@
 
 #include "nckit/core/format_exact.hpp"
 #include "nckit/interp/arc_geometry.hpp"
+#include "nckit/interp/block_counter.hpp"
 #include "nckit/interp/move_gcode.hpp"
+#include "restart_preamble.hpp"
 
 namespace nckit {
+
+using namespace restart_detail;
 
 namespace {
 
 constexpr double takeup_mm = 1.0;     // more than any backlash a machine file may hold today
 constexpr double clearance_mm = 2.0;  // the last stretch onto the point is fed, not rapid
-
-//! One executed block as the move stream shows it: moves from one refill of the interpreter
-//! with the same source line. A block run again (a loop) comes in another refill.
-struct BlockKey {
-    const std::string* file = nullptr;
-    std::uint32_t line = 0;
-    std::uint64_t batch = 0;
-    bool operator==(const BlockKey&) const = default;
-};
 
 const AxisVector* end_of(const Move& move) {
     if (const auto* line = std::get_if<Line>(&move.what)) return &line->to;
@@ -68,158 +64,52 @@ void note_directions(const Move& move, std::array<int, axis_count>& side) {
     }
 }
 
-void note_io(const Io& io, const MachineConfig& machine, RestartIo& state) {
-    switch (io.kind) {
-        case IoKind::tool_select:
-            state.tool_selected = io.number;
-            return;
-        case IoKind::spindle_speed:
-            state.speed_set = true;
-            state.speed = io.value;
-            state.constant_surface_speed = io.constant_surface_speed;
-            state.rpm_clamp = io.rpm_clamp;
-            return;
-        case IoKind::mcode:
-            break;
-    }
-    const int m = io.number;
-    if (m == 3 || m == 4 || m == 5) {
-        state.spindle_mcode = m;
-        state.spindle_rpm = io.value;
-    } else if (m == 6) {
-        state.tool_in_spindle = state.tool_selected;
-    } else if (m == 7) {
-        state.mist = true;
-    } else if (m == 8) {
-        state.flood = true;
-    } else if (m == 9) {
-        state.mist = state.flood = false;
-    } else if (machine.is_laser_on_mcode(m)) {
-        if (std::find(state.laser_on.begin(), state.laser_on.end(), m) == state.laser_on.end())
-            state.laser_on.push_back(m);
-    } else if (machine.is_laser_off_mcode(m)) {
-        state.laser_on.clear();
-    }
-}
-
-std::string location_text(const SourceLocation& where) {
-    return fmt::format("{}:{}", std::filesystem::path(where.file_name()).filename().string(), where.line);
-}
-
-const char* plane_code(Plane plane) {
-    return plane == Plane::xy ? "G17" : plane == Plane::zx ? "G18" : "G19";
-}
-
-void axis_word(std::string& out, Axis axis, double value, int decimals, double& worst) {
-    out += ' ';
-    out += letter(axis);
-    if (decimals < 0) {
-        append_exact(out, value);
-    } else {
-        worst = std::max(worst, append_rounded(out, value, decimals));
-    }
-}
-
-//! The comment lines that record the program's own frame at the target: the moves below carry
-//! it already (machine coordinates), so it is written for the operator, not set again.
-void frame_comments(std::string& out, const ModalView& s, const MachineConfig& machine) {
-    auto vector_text = [&](const AxisVector& v) {
-        std::string text;
-        for (const AxisConfig& axis : machine.axes) {
-            text += ' ';
-            text += letter(axis.axis);
-            append_exact(text, v[axis.axis]);
-        }
-        return text;
-    };
-    fmt::format_to(std::back_inserter(out), "( program state: {} {} {} {}{} G{} offset{} )\n",
-                   s.length_factor_mm == 1.0 ? "G21" : "G20", s.incremental ? "G91" : "G90", plane_code(s.plane),
-                   feed_mode_code(s.feed_mode, machine), s.diameter_mode ? " G7" : "", 54 + s.work_system,
-                   vector_text(s.work_offset));
-    fmt::format_to(std::back_inserter(out), "( G92{} G52{} )\n", vector_text(s.g92_offset), vector_text(s.g52_offset));
-    fmt::format_to(std::back_inserter(out), "( tool length G{}{} H{}{}{} )\n", s.length_offset_code / 10,
-                   s.length_offset_code % 10 != 0 ? ".1" : "", s.length_offset_h, vector_text(s.tool_offset),
-                   s.transform_active ? ", mirror/scaling/rotation in force" : "");
-    out += "( positions below are machine coordinates with all of these applied )\n";
-}
-
-void io_blocks(std::string& out, const RestartIo& io) {
-    if (io.tool_in_spindle > 0) fmt::format_to(std::back_inserter(out), "T{} M6\n", io.tool_in_spindle);
-    if (io.tool_selected != io.tool_in_spindle && io.tool_selected > 0)
-        fmt::format_to(std::back_inserter(out), "T{}\n", io.tool_selected);
-    if (io.speed_set) {
-        if (io.constant_surface_speed) {
-            out += "G96";
-            if (io.rpm_clamp > 0) {
-                out += " D";
-                append_exact(out, io.rpm_clamp);
-            }
-        } else {
-            out += "G97";
-        }
-        out += " S";
-        append_exact(out, io.speed);
-        out += '\n';
-    }
-    if (io.spindle_mcode != 5) fmt::format_to(std::back_inserter(out), "M{}\n", io.spindle_mcode);
-    if (io.mist) out += "M7\n";
-    if (io.flood) out += "M8\n";
-}
-
-Axis retract_axis_of(const MachineConfig& machine) {
-    if (machine.diameter_mode || machine.find(Axis::Y) == nullptr) return Axis::X;
-    return Axis::Z;
-}
-
-void approach_blocks(std::string& out, RestartApproach& a, const MachineConfig& machine, int decimals, double& worst) {
-    const Axis r = a.retract_axis;
-    const double away = a.safe_mm >= a.point[r] ? 1.0 : -1.0;
-    out += "( approach: retract, rapid over the restart point from the side the path came, feed onto it )\n";
-    out += feed_mode_code(FeedMode::per_minute, machine);
-    out += " G64 G0";
-    axis_word(out, r, a.safe_mm, decimals, worst);
-    out += '\n';
-    std::string before = "G0";
-    std::string over = "G0";
-    for (const AxisConfig& axis : machine.axes) {
-        if (axis.axis == r) continue;
-        const int side = a.side[index(axis.axis)];
-        axis_word(before, axis.axis, a.point[axis.axis] - side * a.takeup_mm, decimals, worst);
-        axis_word(over, axis.axis, a.point[axis.axis], decimals, worst);
-    }
-    if (before != "G0") out += before + '\n' + over + '\n';
-    const double near = a.point[r] + away * a.clearance_mm;
-    if (away * (a.safe_mm - near) > 0) {
-        out += "G0";
-        axis_word(out, r, near, decimals, worst);
-        out += '\n';
-    }
-    out += "G1";
-    axis_word(out, r, a.point[r], decimals, worst);
-    out += " F";
-    append_exact(out, a.feed_mm_min);
-    out += '\n';
-}
-
 std::uint32_t line_count(const std::string& text) {
     return static_cast<std::uint32_t>(std::count(text.begin(), text.end(), '\n'));
+}
+
+//! "#500 = 3" lines for the retained variables that differ between `from` and `to` (a
+//! variable that became vacant is written `= #0`, the vacant variable).
+void retained_assignments(std::string& out, const std::vector<RetainedVariable>& from,
+                          const std::vector<RetainedVariable>& to) {
+    auto find = [](const std::vector<RetainedVariable>& in, int number) -> const RetainedVariable* {
+        auto it = std::lower_bound(in.begin(), in.end(), number,
+                                   [](const RetainedVariable& v, int n) { return v.number < n; });
+        return it != in.end() && it->number == number ? &*it : nullptr;
+    };
+    for (const RetainedVariable& v : to) {
+        const RetainedVariable* old = find(from, v.number);
+        if (old != nullptr && std::bit_cast<std::uint64_t>(old->value) == std::bit_cast<std::uint64_t>(v.value)) {
+            continue;
+        }
+        fmt::format_to(std::back_inserter(out), "#{} = ", v.number);
+        append_exact(out, v.value);
+        out += '\n';
+    }
+    for (const RetainedVariable& v : from) {
+        if (find(to, v.number) == nullptr) fmt::format_to(std::back_inserter(out), "#{} = #0\n", v.number);
+    }
 }
 
 }  // namespace
 
 Result<RestartReport> write_restart(Interpreter& interpreter, const RestartTarget& target,
-                                    const std::string& source_name, std::string& out, int decimals) {
+                                    const std::string& source_name, std::string& out, const RestartSettings& settings) {
     const MachineConfig& machine = interpreter.machine();
+    const int decimals = settings.decimals;
     RestartReport report;
     report.state = interpreter.modal_view();
     std::array<int, axis_count> side{};
     std::optional<AxisVector> position;  // where the last motion before the target ended
-    std::optional<BlockKey> previous;
-    std::int64_t blocks = 0, hits = 0, records = 0;
+    BlockCounter blocks;
+    std::int64_t hits = 0, records = 0;
     bool previous_comp = false;
     std::optional<Move> thread_start;  // first move of the run of G32/G33 moves just made
     const std::string* main_file = nullptr;
     std::optional<Move> first;  // the target's first move
+    // #500-#999 as the last block before the target left them (read when they were written).
+    std::uint64_t retained_writes = interpreter.retained_writes();
+    std::vector<RetainedVariable> retained = interpreter.retained_values();
     for (;;) {
         InterpResult result = interpreter.next();
         if (auto* error = std::get_if<Diagnostic>(&result)) return std::move(*error);
@@ -227,17 +117,15 @@ Result<RestartReport> write_restart(Interpreter& interpreter, const RestartTarge
         Move& move = std::get<Move>(result);
         if (main_file == nullptr) main_file = move.where.file.get();
         const ModalView view = interpreter.modal_view();
-        BlockKey key{move.where.file.get(), move.where.line, interpreter.output_batch()};
-        if (!previous || !(key == *previous)) {
-            ++blocks;
-            previous = key;
+        if (blocks.note(move, interpreter.output_batch())) {
             bool hit = false;
             switch (target.kind) {
                 case RestartTarget::Kind::block:
-                    hit = blocks == target.number;
+                    hit = blocks.count() == target.number;
                     break;
                 case RestartTarget::Kind::line:
-                    hit = key.file == main_file && move.where.line == target.number && ++hits == 1;
+                    hit = move.where.file.get() == main_file && move.where.line == target.number &&
+                          ++hits == target.occurrence;
                     break;
                 case RestartTarget::Kind::sequence:
                     hit = move.sequence_number == target.number && ++hits == target.occurrence;
@@ -261,11 +149,15 @@ Result<RestartReport> write_restart(Interpreter& interpreter, const RestartTarge
                 }
                 report.where = move.where;
                 report.sequence_number = move.sequence_number;
-                report.block = blocks;
+                report.block = blocks.count();
                 report.first_record = records;
                 first = std::move(move);
                 break;
             }
+        }
+        if (interpreter.retained_writes() != retained_writes) {
+            retained_writes = interpreter.retained_writes();
+            retained = interpreter.retained_values();
         }
         ++records;
         report.state = view;
@@ -285,14 +177,22 @@ Result<RestartReport> write_restart(Interpreter& interpreter, const RestartTarge
         const char* what = target.kind == RestartTarget::Kind::block  ? "block"
                            : target.kind == RestartTarget::Kind::line ? "line"
                                                                       : "N";
-        std::string text = target.kind == RestartTarget::Kind::sequence
-                               ? fmt::format("N{} is reached {} times, not {}", target.number, hits, target.occurrence)
-                               : fmt::format("{} {} is not reached by a block that moves ({} blocks run)", what,
-                                             target.number, blocks);
+        std::string text =
+            target.kind != RestartTarget::Kind::block
+                ? fmt::format("{} {} is reached {} times, not {}", what, target.number, hits, target.occurrence)
+                : fmt::format("block {} is not reached by a block that moves ({} blocks run)", target.number,
+                              blocks.count());
         return error_at(make_location(std::make_shared<const std::string>(source_name), 1, 1), "restart-not-reached",
                         std::move(text));
     }
-
+    // The block before the target left `retained` (its values once all moves before the target
+    // were made); a journal's values must be the same, or the program or its inputs changed.
+    report.retained = retained;
+    if (settings.retained_at_target && *settings.retained_at_target != retained) {
+        return error_at(report.where, "restart-journal-mismatch",
+                        "the run journal's #500-#999 at this block differ from those the program computes from "
+                        "the journal's starting values: the program or its inputs changed since the run");
+    }
     // The preamble and approach, then the target's moves and everything after them.
     GcodeWriter writer(machine);
     writer.round_to_decimals(decimals);
@@ -324,16 +224,22 @@ Result<RestartReport> write_restart(Interpreter& interpreter, const RestartTarge
                            report.sequence_number >= 0 ? fmt::format(" N{}", report.sequence_number) : std::string(),
                            report.block);
             writer.append_header(out, source_name);
-            frame_comments(out, report.state, machine);
+            const bool in_frame = frame_can_be_set(report.state, machine);
+            frame_comments(out, report.state, machine, in_frame);
+            if (settings.retained_at_target) {
+                out += "( retained variables as the interrupted run left them )\n";
+                retained_assignments(out, {}, retained);
+            }
             io_blocks(out, report.io);
             if (a.moves) approach_blocks(out, a, machine, decimals, report.worst_deviation_mm);
+            if (in_frame) frame_blocks(out, report.state, machine, a.moves ? &a.point : nullptr);
             for (int m : report.io.laser_on) fmt::format_to(std::back_inserter(out), "M{}\n", m);
             const ModalView& s = report.state;
             fmt::format_to(std::back_inserter(out), "{} {}", plane_code(s.plane), feed_mode_code(s.feed_mode, machine));
-            if (s.feed > 0) {
-                out += " F";
-                append_exact(out, s.feed);
-            }
+            // F0 too: the approach's feed must not stay in force.
+            out += " F";
+            append_exact(out, in_frame ? s.feed / s.length_factor_mm : s.feed);
+            if (in_frame && s.incremental) out += " G91";
             if (s.path.exact_stop) {
                 out += " G61";
             } else if (s.path.tolerance_mm > 0) {
@@ -343,8 +249,16 @@ Result<RestartReport> write_restart(Interpreter& interpreter, const RestartTarge
                 out += " G64";
             }
             out += "\n( the rest of the program from the target on )\n";
-            writer.assume_modes(s.plane, s.feed_mode, s.feed > 0 ? s.feed : -1, s.path);
+            writer.assume_modes(s.plane, s.feed_mode, s.feed, s.path);
+            if (in_frame) writer.use_frame(program_frame(s, machine), a.point);
             report.rest_line = line_count(out) + 1;
+        }
+        // After a journal, #500-#999 go on changing as the original run changed them.
+        if (settings.retained_at_target && interpreter.retained_writes() != retained_writes) {
+            retained_writes = interpreter.retained_writes();
+            std::vector<RetainedVariable> now = interpreter.retained_values();
+            retained_assignments(out, retained, now);
+            retained = std::move(now);
         }
         writer.append(out, *pending);
         pending.reset();

@@ -5,6 +5,7 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <optional>
 #include <variant>
 #include <vector>
 
@@ -15,6 +16,13 @@
 #include "nckit/interp/move.hpp"
 
 namespace nckit {
+
+//! One retained macro variable (#500-#999) that holds a number.
+struct RetainedVariable {
+    int number = 0;
+    double value = 0;
+    bool operator==(const RetainedVariable&) const = default;
+};
 
 struct InterpreterOptions {
     //! The operator's block delete switch: when on, blocks that start with '/' are skipped.
@@ -39,6 +47,9 @@ struct InterpreterOptions {
     //! File that keeps #500-#999 between runs; empty: they start vacant and are not kept. In the
     //! LinuxCNC dialect: its parameter file (`NUMBER<tab>VALUE` lines, like LinuxCNC's .var).
     std::filesystem::path retained_file;
+    //! When set, #500-#999 start with these values (the others vacant) instead of the file's,
+    //! and nothing is written back: a restart resumes with the values its run journal kept.
+    std::optional<std::vector<RetainedVariable>> retained_start;
     //! Write changed #500-#999 back at the end of the run (a check reads them but keeps none).
     bool save_retained = true;
     //! After an error in a block of the main program (a syntax error, a bad word, a move off the
@@ -103,6 +114,11 @@ public:
     //! The machine stands at `machine` (machine coordinates, mm / deg) now, moved outside the
     //! program: the next move starts there.
     void set_position(const AxisVector& machine);
+    //! Counts the writes to #500-#999 so far (Fanuc dialect; 0 in the LinuxCNC dialect, whose
+    //! parameter file is its own): a run journal reads retained_values() only when it moves.
+    [[nodiscard]] std::uint64_t retained_writes() const;
+    //! The retained variables that hold a number now, by number.
+    [[nodiscard]] std::vector<RetainedVariable> retained_values() const;
 
 private:
     struct State;

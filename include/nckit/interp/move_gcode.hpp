@@ -13,6 +13,15 @@ namespace nckit {
 //! where G94 is the facing cycle.
 [[nodiscard]] const char* feed_mode_code(FeedMode mode, const MachineConfig& machine);
 
+//! The frame written coordinates are in: program = (machine − origin) / factor on every
+//! linear axis (rotary axes: machine − origin); incremental: each axis word is the distance
+//! from the last point written. The default is the machine frame, absolute, in mm.
+struct GcodeFrame {
+    AxisVector origin_mm;           //!< machine coordinates of the program's zero
+    double length_factor_mm = 1.0;  //!< mm per program length unit: 25.4 under G20
+    bool incremental = false;       //!< G91
+};
+
 class GcodeWriter {
 public:
     explicit GcodeWriter(const MachineConfig& machine) : machine_(machine) {}
@@ -37,6 +46,12 @@ public:
         path_ = path;
     }
 
+    //! Writes the moves from here on in `frame` (feeds and leads in its length unit too); the
+    //! tool stands at `position` (machine coordinates), where incremental words start from.
+    void use_frame(const GcodeFrame& frame, const AxisVector& position) {
+        frame_ = frame;
+        last_ = position;
+    }
     //! One block for the move, ending in a comment that names its source file and line.
     void append(std::string& out, const Move& move);
 
@@ -44,7 +59,9 @@ public:
     void append_footer(std::string& out) const;
 
 private:
-    void number(std::string& out, char letter, double value);
+    //! `value` in program units; `scale_mm` mm per unit, for the deviation of a rounding.
+    void number(std::string& out, char letter, double value, double scale_mm = 1.0);
+    [[nodiscard]] double length_factor(Axis axis) const;
     void append_axes(std::string& out, const AxisVector& position);
     void append_feed(std::string& out, const Feed& feed);
     //! G61 or G64 P before a move whose path control differs from the last one written; a G9
@@ -59,6 +76,8 @@ private:
     bool ended_ = false;
     int decimals_ = -1;
     double worst_deviation_mm_ = 0;
+    GcodeFrame frame_;
+    AxisVector last_;  // machine coordinates of the last point written (incremental frames)
 };
 
 }  // namespace nckit

@@ -5,6 +5,7 @@
 // rest of the original run as plain absolute moves (docs/restart.md).
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,14 +16,14 @@
 
 namespace nckit {
 
-//! Where to restart: the k-th time sequence number N is reached, the first time a block of
-//! the main program's source line L runs, or the B-th executed block. Only blocks that make a
-//! move or an I/O event count; a block run again in a loop or a call counts again.
+//! Where to restart: the k-th time sequence number N is reached, the k-th time a block of the
+//! main program's source line L runs, or the B-th executed block. Only blocks that make a move
+//! or an I/O event count; a block run again in a loop or a call counts again.
 struct RestartTarget {
     enum class Kind { sequence, line, block };
     Kind kind = Kind::block;
     std::int64_t number = 1;      //!< N, L or B
-    std::int64_t occurrence = 1;  //!< k (sequence only)
+    std::int64_t occurrence = 1;  //!< k (sequence and line)
 };
 
 //! The spindle, tool and I/O state the events before the target left, which a restart program
@@ -62,14 +63,23 @@ struct RestartReport {
     ModalView state;                //!< modal state in force before the target block
     RestartIo io;
     RestartApproach approach;
-    double worst_deviation_mm = 0;  //!< with rounding (decimals >= 0)
+    double worst_deviation_mm = 0;           //!< with rounding (decimals >= 0)
+    std::vector<RetainedVariable> retained;  //!< #500-#999 as the blocks before the target left them
+};
+
+struct RestartSettings {
+    int decimals = -1;  //!< < 0: coordinates exact (see GcodeWriter::round_to_decimals)
+    //! From a run journal: #500-#999 as the interrupted run left them before the target. The
+    //! search must arrive at the same values (else `restart-journal-mismatch`); the preamble
+    //! sets them and the rest sets them again wherever the original run changed them.
+    std::optional<std::vector<RetainedVariable>> retained_at_target;
 };
 
 //! Runs `interpreter` from its start to the target without motion and writes the restart
 //! program into `out`. Refuses a target inside cutter compensation or in the middle of a thread
 //! (the error names the block and, for a thread, the pass's first block), or one never reached.
-//! `decimals` < 0 writes coordinates exactly (see GcodeWriter::round_to_decimals).
 [[nodiscard]] Result<RestartReport> write_restart(Interpreter& interpreter, const RestartTarget& target,
-                                                  const std::string& source_name, std::string& out, int decimals = -1);
+                                                  const std::string& source_name, std::string& out,
+                                                  const RestartSettings& settings = {});
 
 }  // namespace nckit

@@ -48,6 +48,7 @@ std::optional<Variables::WriteError> Variables::write(std::int64_t number, Macro
         case VariableKind::retained:
             retained_[static_cast<std::size_t>(number - first_retained)] = value;
             retained_changed_ = true;
+            ++retained_writes_;
             return std::nullopt;
         case VariableKind::system: {
             if (system_ == nullptr) return WriteError{alarm::illegal_variable, "no system variables here"};

@@ -46,6 +46,8 @@ public:
     void set_retained(const RetainedValues& values) { retained_ = values; }
     [[nodiscard]] const RetainedValues& retained() const { return retained_; }
     [[nodiscard]] bool retained_changed() const { return retained_changed_; }
+    //! Counts writes to #500-#999: a run journal records the values only when this moves.
+    [[nodiscard]] std::uint64_t retained_writes() const { return retained_writes_; }
 
     //! Reads a variable; nothing when the number names no variable.
     [[nodiscard]] std::optional<MacroValue> read(std::int64_t number) const;
@@ -66,6 +68,7 @@ private:
     std::array<MacroValue, 400> common_{};  // #100..#499
     RetainedValues retained_{};
     bool retained_changed_ = false;
+    std::uint64_t retained_writes_ = 0;
     SystemVariables* system_ = nullptr;
 };
 
