@@ -60,8 +60,7 @@ void print_report(const PlanOptions& options, const MachineConfig& machine, doub
     fmt::print("cycle time: {:.6f} s\nmoves: {}\n", cycle_time_s, moves);
     if (sync.count() > 0) {
         fmt::print("G32/G33 starts: {}, each on its start angle past the spindle index (largest error {:.3g} deg)\n",
-                   sync.count(),
-                   sync.max_index_error_deg());
+                   sync.count(), sync.max_index_error_deg());
     }
     fmt::print("axis {:>16} {:>18} {:>18}\n", "max |v|", "max |a|", "max |j|");
     for (const AxisConfig& axis : machine.axes) {

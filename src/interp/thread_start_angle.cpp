@@ -20,9 +20,10 @@ std::optional<Diagnostic> Executor::thread_start_angle(const Word& q, double& an
                      "Q (thread start angle) is in 0.001 degree and takes no decimal point: Q180000 is 180 degrees");
     }
     if (!(q.value >= 0 && q.value <= thousandths_per_turn) || q.value != std::floor(q.value)) {
-        return error(q.column, "bad-value",
-                     fmt::format("Q (thread start angle) must be a whole number from 0 to 360000 (0.001 degree), not {}",
-                                 q.value));
+        return error(
+            q.column, "bad-value",
+            fmt::format("Q (thread start angle) must be a whole number from 0 to 360000 (0.001 degree), not {}",
+                        q.value));
     }
     angle_deg = std::fmod(q.value, thousandths_per_turn) / 1000.0;
     return std::nullopt;

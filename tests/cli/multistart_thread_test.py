@@ -158,7 +158,7 @@ def main() -> int:
                 check(off_by_deg(s["spindle_angle_deg"], 45.0, -1.0) < 1e-6,
                       f"M4: 45 deg past the index backwards (spindle at {s['spindle_angle_deg']:.6f})")
 
-        # Malformed: each refused with FILE:LINE:COL, exit 2, nothing printed on stdout.
+        # Malformed: each refused with FILE:LINE:COL, exit 2; check and plan print nothing on stdout.
         bad_cases = {
             "G92 X29. Z-20. F2. Q180.": "decimal point",
             "G92 X29. Z-20. F2. Q360001": "0 to 360000",
@@ -170,10 +170,12 @@ def main() -> int:
         for block, message in bad_cases.items():
             bad = pathlib.Path(tmp) / "bad.nc"
             bad.write_text(f"G18 G21 G99\nG97 S500 M3\nG0 X34. Z5.\n{block}\nM30\n")
-            run = nckit_run(nckit, "moves", "--machine", machine, bad)
+            run = nckit_run(nckit, "check", "--machine", machine, bad)
             column = block.index(next(w for w in ("Q", "P2") if w in block)) + 1
             check(run.returncode == 2 and f"bad.nc:4:{column}: error:" in run.stderr and message in run.stderr
                   and run.stdout == "", f"'{block}' refused at 4:{column} ({run.stderr.strip()})")
+            run = nckit_run(nckit, "plan", "--machine", machine, bad)
+            check(run.returncode == 2 and run.stdout == "", f"'{block}': plan moves nothing")
     print(f"{checks - len(failures)} passed, {len(failures)} failed")
     return 1 if failures else 0
 
