@@ -32,8 +32,10 @@ std::string sync_json(const SyncReport& sync) {
                                   sync.count(), sync.max_index_error_deg());
     for (std::size_t i = 0; i < sync.starts().size(); ++i) {
         const SyncStart& s = sync.starts()[i];
-        out += fmt::format("{}{{\"line\":{},\"t_s\":{},\"wait_s\":{},\"spindle_angle_deg\":{},\"encoder_count\":{}}}",
-                           i == 0 ? "" : ",", s.where.line, s.t_s, s.wait_s, s.spindle_angle_deg, s.encoder_count);
+        out += fmt::format(
+            "{}{{\"line\":{},\"t_s\":{},\"wait_s\":{},\"spindle_angle_deg\":{},\"start_angle_deg\":{},"
+            "\"encoder_count\":{}}}",
+            i == 0 ? "" : ",", s.where.line, s.t_s, s.wait_s, s.spindle_angle_deg, s.start_angle_deg, s.encoder_count);
     }
     return out + "]}";
 }
@@ -57,8 +59,8 @@ void print_report(const PlanOptions& options, const MachineConfig& machine, doub
     }
     fmt::print("cycle time: {:.6f} s\nmoves: {}\n", cycle_time_s, moves);
     if (sync.count() > 0) {
-        fmt::print("G32/G33 starts: {}, each on the spindle index (largest error {:.3g} deg)\n", sync.count(),
-                   sync.max_index_error_deg());
+        fmt::print("G32/G33 starts: {}, each on its start angle past the spindle index (largest error {:.3g} deg)\n",
+                   sync.count(), sync.max_index_error_deg());
     }
     fmt::print("axis {:>16} {:>18} {:>18}\n", "max |v|", "max |a|", "max |j|");
     for (const AxisConfig& axis : machine.axes) {

@@ -166,7 +166,10 @@ private:
     std::optional<Diagnostic> pattern_cycle(std::vector<Move>& out);
     std::optional<Diagnostic> thread_cycle(std::vector<Move>& out);  //!< G76 (lathe_thread_cycle.cpp)
     std::optional<Diagnostic> groove_cycle(std::vector<Move>& out);  //!< G74/G75 (lathe_groove_cycles.cpp)
-    std::optional<Diagnostic> sync_to(const AxisVector& target, double lead_mm, std::vector<Move>& out);
+    std::optional<Diagnostic> sync_to(const AxisVector& target, double lead_mm, double start_angle_deg,
+                                      std::vector<Move>& out);
+    //! Q of a threading block: the start angle past the index, deg (thread_start_angle.cpp).
+    std::optional<Diagnostic> thread_start_angle(const Word& q, double& angle_deg) const;
     std::optional<Diagnostic> feed_arc(Arc arc, std::vector<Move>& out);
 
     // System variable helpers (executor_system_variables.cpp).

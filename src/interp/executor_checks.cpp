@@ -152,8 +152,9 @@ std::optional<Diagnostic> Executor::check_words() {
                 return unused("P word with no G4, G10, G64 or drilling cycle to use it");
             case 'Q':
                 // LinuxCNC's G64 Q (naive CAM tolerance) is accepted; nckit's planner needs only P.
-                if (words_.group(ModalGroup::path_control) == g(64) || cycle) continue;
-                return unused("Q word with no G64 or drilling cycle to use it");
+                // G32/G33 Q: the thread's start angle past the index (thread_start_angle.cpp).
+                if (words_.group(ModalGroup::path_control) == g(64) || cycle || is_thread(motion_)) continue;
+                return unused("Q word with no G64, thread or drilling cycle to use it");
             case 'L':
                 if (non_modal == g(10) || cycle) continue;
                 return unused("L word with no G10 or drilling cycle to use it");

@@ -153,13 +153,17 @@ std::optional<Diagnostic> Executor::sync(const AxisVector& target, std::vector<M
     }
     double lead = offset_value(*lead_word);
     if (lead <= 0) return error(lead_word->column, "bad-value", "thread lead must be positive");
+    double start_angle_deg = 0;
+    if (const Word* q = words_.word('Q')) {
+        if (auto e = thread_start_angle(*q, start_angle_deg)) return e;
+    }
     if (auto e = check_line_travel(target)) return e;
     Feed feed;
     feed.mode = FeedMode::per_revolution;
     feed.mm_per_rev = lead;
     // Under G96 the speed is the surface speed's rpm at the start, as for G95 feeds.
     feed.mm_per_min = lead * spindle_rpm_at(work_x());
-    push(out, SyncMove{position_, target, feed});
+    push(out, SyncMove{position_, target, feed, start_angle_deg});
     position_ = target;
     return std::nullopt;
 }

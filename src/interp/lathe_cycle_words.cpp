@@ -81,10 +81,6 @@ std::optional<Diagnostic> Executor::check_lathe_cycle_words(GCode cycle) const {
                     threading ? fmt::format("{} needs the thread lead F", name) : "cutting move with no feed rate (F)");
             }
         }
-        if (const Word* q = words_.word('Q'); q != nullptr && q->value != 0) {
-            return error(q->column, "unsupported-word",
-                         fmt::format("{} Q (start angle of a multi-start thread) is not supported", name));
-        }
     }
     return std::nullopt;
 }

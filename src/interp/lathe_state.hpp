@@ -7,10 +7,11 @@
 namespace nckit::interp {
 
 struct LatheSingleCycle {
-    GCode mode = -1;      //!< the cycle these words belong to; -1: none has run
-    AxisVector end;       //!< end point of the cut, machine coordinates, mm
-    double taper_mm = 0;  //!< R: the cut starts this far (radius under G90/G92, Z under G94) from `end`
-    double lead_mm = 0;   //!< G92 F: thread lead, mm per revolution
+    GCode mode = -1;             //!< the cycle these words belong to; -1: none has run
+    AxisVector end;              //!< end point of the cut, machine coordinates, mm
+    double taper_mm = 0;         //!< R: the cut starts this far (radius under G90/G92, Z under G94) from `end`
+    double lead_mm = 0;          //!< G92 F: thread lead, mm per revolution
+    double start_angle_deg = 0;  //!< G92 Q: spindle angle past the index at which each cut starts
 };
 
 //! The first blocks of the repetitive cycles (G71 U R, G72 W R, G73 U W R), kept until changed.

@@ -2,14 +2,17 @@
 // older controls, expanded into spindle-locked passes (SyncMove, as G32) of constant area:
 //   G76 P(mm rr aa) Q(smallest step) R(finishing allowance)
 //   G76 X(U) Z(W) R(taper) P(thread height) Q(first depth) F(lead)
-//   G76 X(U) Z(W) I(taper) K(thread height) D(first depth) F(lead) A(angle)   (one block)
+//   G76 X(U) Z(W) I(taper) K(thread height) D(first depth) F(lead) A(angle) Q(start angle)
+//                                                                               (one block)
 // P, Q and the one-block D are in least increments when written without a decimal point
 // (P1500 = 1.5 mm). Pass n cuts to depth d·√n below the crest, so every pass removes the same
 // area of the V; a step smaller than Q is raised to Q; the last rough pass stops at the height
 // less the allowance; then mm finishing passes cut at the full height. Each pass: rapid in X
 // to its depth (the start moved depth·tan(aa/2) along Z towards the thread's end, so one flank
 // cuts), the cut locked to the spindle, a 45-degree pull-out of rr/10 leads when rr is given,
-// rapid out in X, rapid back to the start.
+// rapid out in X, rapid back to the start. The one-block form's Q shifts every pass's start by
+// an angle past the index (a multi-start thread); the two-block form's Q is the first depth, so
+// it has no start angle, as on the 0i.
 #include <cmath>
 #include <numbers>
 
@@ -25,13 +28,14 @@ constexpr int max_thread_passes = 1000;
 constexpr double deg_to_rad = std::numbers::pi / 180.0;
 }  // namespace
 
-std::optional<Diagnostic> Executor::sync_to(const AxisVector& target, double lead_mm, std::vector<Move>& out) {
+std::optional<Diagnostic> Executor::sync_to(const AxisVector& target, double lead_mm, double start_angle_deg,
+                                            std::vector<Move>& out) {
     if (auto e = check_line_travel(target)) return e;
     Feed feed;
     feed.mode = FeedMode::per_revolution;
     feed.mm_per_rev = lead_mm;
     feed.mm_per_min = lead_mm * spindle_rpm_at(work_x());
-    push(out, SyncMove{position_, target, feed});
+    push(out, SyncMove{position_, target, feed, start_angle_deg});
     position_ = target;
     return std::nullopt;
 }
@@ -79,6 +83,14 @@ std::optional<Diagnostic> Executor::thread_cycle(std::vector<Move>& out) {
     const double min_cut = one_block ? 0.0 : settings.min_cut_mm;
     double angle = one_block ? 60.0 : settings.thread_angle_deg;
     if (const Word* a = words_.word('A'); a != nullptr && one_block) angle = a->value;
+    double start_angle_deg = 0;
+    if (const Word* q = words_.word('Q'); q != nullptr && one_block) {
+        if (auto e = thread_start_angle(*q, start_angle_deg)) return e;
+    }
+    if (const Word* p = words_.word('P'); p != nullptr && one_block && p->value != 1) {
+        return error(p->column, "unsupported-word",
+                     fmt::format("{} P{}: only infeed P1 (one flank, constant area) is supported", name, p->value));
+    }
     if (height <= 0 || first <= 0) {
         return error(height <= 0 ? height_word->column : first_word->column, "bad-value",
                      fmt::format("{}: the thread height and the first depth must be positive", name));
@@ -119,9 +131,9 @@ std::optional<Diagnostic> Executor::thread_cycle(std::vector<Move>& out) {
         if (auto e = straight(g(0), at(start[Axis::X], z), out)) return e;
         if (auto e = straight(g(0), at(x + taper, z), out)) return e;
         if (chamfer > 0) {
-            if (auto e = sync_to(at(x, root[Axis::Z] - along * chamfer), lead, out)) return e;
-            if (auto e = sync_to(at(x + outward * chamfer, root[Axis::Z]), lead, out)) return e;
-        } else if (auto e = sync_to(at(x, root[Axis::Z]), lead, out)) {
+            if (auto e = sync_to(at(x, root[Axis::Z] - along * chamfer), lead, start_angle_deg, out)) return e;
+            if (auto e = sync_to(at(x + outward * chamfer, root[Axis::Z]), lead, start_angle_deg, out)) return e;
+        } else if (auto e = sync_to(at(x, root[Axis::Z]), lead, start_angle_deg, out)) {
             return e;
         }
         if (auto e = straight(g(0), at(start[Axis::X], root[Axis::Z]), out)) return e;

@@ -126,6 +126,8 @@ void append_move_text(std::string& out, const Move& move, const MachineConfig& m
                        out += "G33";
                        axes_text(out, s.to, machine);
                        feed_text(out, s.feed);
+                       if (s.start_angle_deg != 0)
+                           fmt::format_to(std::back_inserter(out), " Q{:.3f}", s.start_angle_deg);
                    },
                    [&](const Dwell& d) { fmt::format_to(std::back_inserter(out), "G4 P{:.4f}", d.seconds); },
                    [&](const Io& io) {
@@ -166,6 +168,10 @@ void append_move_json(std::string& out, const Move& move, const MachineConfig& m
                        json_axes(out, "start", s.from, machine);
                        json_axes(out, "end", s.to, machine);
                        json_feed(out, s.feed);
+                       if (s.start_angle_deg != 0) {
+                           out += ",\"start_angle_deg\":";
+                           json_number(out, s.start_angle_deg);
+                       }
                    },
                    [&](const Dwell& d) {
                        out += ",\"kind\":\"dwell\",\"seconds\":";

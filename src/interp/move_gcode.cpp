@@ -165,6 +165,11 @@ void GcodeWriter::append(std::string& out, const Move& move) {
                 append_axes(out, m.to);
                 out += " K";  // the lead, mm/rev (LinuxCNC and nckit read K), never rounded
                 append_exact(out, m.feed.mm_per_rev / frame_.length_factor_mm);
+                // A multi-start thread's start angle, in Fanuc's 0.001 degree (the angle came
+                // from such a Q, so it is a whole number of them).
+                if (m.start_angle_deg != 0) {
+                    fmt::format_to(std::back_inserter(out), " Q{}", std::llround(m.start_angle_deg * 1000.0));
+                }
             } else if constexpr (std::is_same_v<T, Dwell>) {
                 out += "G4 P";
                 append_exact(out, m.seconds * 1000.0);

@@ -199,6 +199,16 @@ int NckitInterp::read() {
         InterpResult result = interpreter_->next();
         view_ = interpreter_->modal_view();
         if (auto* move = std::get_if<Move>(&result)) {
+            // LinuxCNC's spindle-synchronised motion always starts at the index pulse: a thread
+            // start past it (Q, a multi-start thread) would be cut on top of the first start.
+            if (const auto* sync = std::get_if<SyncMove>(&move->what); sync != nullptr && sync->start_angle_deg != 0) {
+                program_error_ = error_at(move->where, "sync-start-angle",
+                                          fmt::format("a thread starting {} deg past the spindle index (Q): LinuxCNC "
+                                                      "starts every synchronised move at the index; shift the start "
+                                                      "along Z by a fraction of the lead instead",
+                                                      sync->start_angle_deg));
+                return fail_with(*program_error_);
+            }
             note_move(*move, *interpreter_);
             pending_ordinal_ = moves_taken_++;
             pending_ = std::move(*move);

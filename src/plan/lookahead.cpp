@@ -262,9 +262,10 @@ void Lookahead::emit_event(const WindowEvent& event, const AxisVector& position)
     piece.duration_s = event.kind == PieceKind::dwell ? std::max(0.0, event.dwell_s) : 0.0;
     if (event.wait_index) {
         // The planner refuses G32/G33 with the spindle stopped, so an index always comes.
-        const std::optional<double> index_s = spindle_.next_index_s(clock_s_);
+        const std::optional<double> index_s = spindle_.next_index_s(clock_s_, event.index_angle_deg);
         piece.duration_s = index_s ? *index_s - clock_s_ : 0.0;
         piece.waits_for_index = true;
+        piece.index_angle_deg = event.index_angle_deg;
     }
     piece.where = event.where;
     piece.sequence_number = event.sequence_number;

@@ -61,8 +61,9 @@ private:
 struct WindowEvent {
     PieceKind kind = PieceKind::io;
     Io io;
-    double dwell_s = 0;       //!< s, dwell only
-    bool wait_index = false;  //!< dwell until the spindle's next index pulse (G32/G33), not dwell_s
+    double dwell_s = 0;          //!< s, dwell only
+    bool wait_index = false;     //!< dwell until the spindle's next index pulse (G32/G33), not dwell_s
+    double index_angle_deg = 0;  //!< wait_index: until this angle past the pulse (a thread's start)
     SourceLocation where;
     std::int64_t sequence_number = -1;
 };

@@ -311,10 +311,11 @@ struct Planner::Impl {
         return feed.mm_per_rev * rpm / 60.0;
     }
 
-    //! G32/G33: the axes stop, wait for the index pulse, and move the lead per turn, without
-    //! feed override (locked, as on Fanuc and LinuxCNC). A thread chained to the previous G32
-    //! goes on at speed; anything else in between means a new wait, so every pass of a
-    //! repeated thread starts at the same spindle angle.
+    //! G32/G33: the axes stop, wait for the index pulse (or the start angle past it, Q), and
+    //! move the lead per turn, without feed override (locked, as on Fanuc and LinuxCNC). A
+    //! thread chained to the previous G32 goes on at speed (its Q has no effect, as on Fanuc);
+    //! anything else in between means a new wait, so every pass of a repeated thread starts at
+    //! the same spindle angle, and each start of a multi-start thread at its own.
     void sync_motion(const SyncMove& sync, const Move& move, bool after_sync) {
         const double rpm = spindle.signed_rpm(machine.spindle);
         if (rpm == 0.0) {
@@ -348,6 +349,7 @@ struct Planner::Impl {
             WindowEvent wait;
             wait.kind = PieceKind::dwell;
             wait.wait_index = true;
+            wait.index_angle_deg = sync.start_angle_deg;
             wait.where = move.where;
             wait.sequence_number = move.sequence_number;
             event(std::move(wait), true);

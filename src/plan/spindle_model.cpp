@@ -97,13 +97,13 @@ long long SpindleModel::count_at(double t_s) const {
     return static_cast<long long>(std::floor(angle_deg(t_s) / 360.0 * config_.encoder_counts));
 }
 
-std::optional<double> SpindleModel::next_index_s(double t_s) const {
+std::optional<double> SpindleModel::next_index_s(double t_s, double past_index_deg) const {
     if (rpm_ == 0.0) return std::nullopt;
     const double sense = rpm_ > 0 ? 1.0 : -1.0;
     const double now_deg = angle_deg(t_s);
-    // An angle within a nano-degree of the index counts as on it: the pulse is there now.
+    // An angle within a nano-degree of the target counts as on it: the moment is now.
     const double psi_now = sense * now_deg;
-    const double psi_index = std::ceil(psi_now / 360.0 - 1e-12) * 360.0;
+    const double psi_index = std::ceil((psi_now - past_index_deg) / 360.0 - 1e-12) * 360.0 + past_index_deg;
     const double start = sense * angle_since_deg_;
     return std::max(t_s, since_s_ + travel_time_s(start, psi_index));
 }

@@ -88,6 +88,42 @@ TEST(SpindleModel, RippleSlowsATurnAndIndexPulsesComeOncePerTurn) {
     EXPECT_NEAR(spindle.mean_rpm(), 600 * std::sqrt(1 - 0.04), 1e-12);
 }
 
+// A start angle past the index (G32/G92 Q): without ripple, 600 rpm turns 3.6 deg per ms, so
+// 90 deg past the index is 25 ms into each 100 ms turn.
+TEST(SpindleModel, StartAnglePastTheIndex) {
+    SpindleModel spindle(rippled(0));
+    spindle.set_speed(0.0, 600);
+    EXPECT_NEAR(*spindle.next_index_s(0.01, 90), 0.025, 1e-12);
+    EXPECT_NEAR(*spindle.next_index_s(0.025, 90), 0.025, 1e-12);  // there now
+    EXPECT_NEAR(*spindle.next_index_s(0.03, 90), 0.125, 1e-12);
+    EXPECT_NEAR(*spindle.next_index_s(0.03, 0), 0.1, 1e-12);
+    SpindleModel backwards(rippled(0));
+    backwards.set_speed(0.0, -600);  // M4: 90 deg past the index is the angle -90, -450, ...
+    EXPECT_NEAR(*backwards.next_index_s(0.03, 90), 0.125, 1e-12);
+    EXPECT_NEAR(backwards.angle_deg(0.125), -450.0, 1e-9);
+}
+
+// Property: with ripple, the spindle stands at the asked angle (in its turning sense) at the
+// time returned, and no earlier time after the asked one has it there (within one turn).
+TEST(SpindleModel, StartAngleWithRippleLandsOnTheAngle) {
+    std::mt19937 random(11);
+    std::uniform_real_distribution<double> angle(0.0, 360.0);
+    std::uniform_real_distribution<double> time(0.0, 2.0);
+    for (int trial = 0; trial < 60; ++trial) {
+        SpindleModel spindle(rippled(0.2, 1 + trial % 3, 17.0 * trial));
+        const double rpm = trial % 2 == 0 ? 700.0 : -900.0;
+        spindle.set_speed(0.0, rpm);
+        const double sense = rpm > 0 ? 1.0 : -1.0;
+        const double want = angle(random);
+        const double from = time(random);
+        const double t = *spindle.next_index_s(from, want);
+        SCOPED_TRACE(trial);
+        EXPECT_NEAR(std::remainder(sense * spindle.angle_deg(t) - want, 360.0), 0.0, 1e-7);
+        EXPECT_GE(t, from);
+        EXPECT_LE(sense * (spindle.angle_deg(t) - spindle.angle_deg(from)), 360.0 + 1e-7);
+    }
+}
+
 MachineConfig lathe_with(const SpindleConfig& spindle) {
     MachineConfig m = plan_test::test_machine(ProfileKind::scurve);
     m.spindle = spindle;

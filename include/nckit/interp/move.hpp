@@ -51,6 +51,9 @@ struct SyncMove {
     AxisVector from;
     AxisVector to;
     Feed feed;
+    //! deg past the spindle's index pulse, in its turning sense, at which the cut starts
+    //! (Fanuc's Q: the starts of a multi-start thread lie 360/n apart); [0, 360)
+    double start_angle_deg = 0;
 };
 
 struct Dwell {

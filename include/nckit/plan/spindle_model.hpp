@@ -28,9 +28,11 @@ public:
     [[nodiscard]] double angle_deg(double t_s) const;
     //! Encoder count at `t_s`: floor(angle / 360 · counts), continuous over turns.
     [[nodiscard]] long long count_at(double t_s) const;
-    //! s: the first index pulse (angle a multiple of 360°) at or after `t_s`, or nothing when
-    //! the spindle stands.
-    [[nodiscard]] std::optional<double> next_index_s(double t_s) const;
+    //! s: the first time at or after `t_s` at which the spindle stands `past_index_deg` (in
+    //! [0, 360)) past its index pulse in its turning sense (angle ≡ past_index_deg under M3,
+    //! ≡ −past_index_deg under M4, mod 360°), or nothing when the spindle stands. 0: the index
+    //! pulse itself.
+    [[nodiscard]] std::optional<double> next_index_s(double t_s, double past_index_deg = 0) const;
     //! rpm commanded now (signed as in set_speed).
     [[nodiscard]] double rpm() const { return rpm_; }
     //! rpm averaged over a turn: the ripple slows a turn by 1/sqrt(1 − r²).

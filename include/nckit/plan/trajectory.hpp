@@ -36,6 +36,7 @@ struct TrajectoryPiece {
     //! planned in pieces, docs/planner.md "Speed along an arc"): not a new move, no junction.
     bool continues_move = false;
     bool waits_for_index = false;  //!< a dwell until the spindle's index pulse (before G32/G33)
+    double index_angle_deg = 0;    //!< waits_for_index: the angle past the pulse it waits for (Q)
 };
 
 //! The axes' state at one time, exact (from the piecewise-cubic profile and the segment's
