@@ -56,10 +56,11 @@ from machine_support import open_lock, rewrite_ini  # noqa: E402
 EXAMPLE = os.path.join("examples", "linuxcnc", "piston_lathe")
 LOCKFILE = "/tmp/nckit-linuxcnc.lock"
 # The columns piston_sampler.hal records after halsampler's tag: encoder counts, Z, the cam's
-# wanted position, its command, the servo's position, the error, the fault bit, the index.
-COLUMNS = 8
-COUNTS, Z, WANTED, COMMAND, POSITION, ERROR, FAULT, INDEX = range(COLUMNS)
+# wanted position, its command, the servo's position, the error, the fault bit, the index, X.
+COLUMNS = 9
+COUNTS, Z, WANTED, COMMAND, POSITION, ERROR, FAULT, INDEX, X = range(COLUMNS)
 POSITION_BEFORE = COLUMNS  # the servo's position at the start of the period (added by check())
+TIP = COLUMNS + 1  # X plus POSITION_BEFORE: the tool's tip, the radius it cuts (added by check())
 COUNTS_PER_TURN = 360
 PROGRAMMED_RPM = 2500.02
 SERVO_PERIOD_S = 66666e-9
@@ -84,7 +85,7 @@ def with_feed(toml_text, program_text, feed_mm_rev):
     """The job and the program at another Z feed per turn (the piston's and the program's own
     feed lines rewritten; fails when either is not found exactly once)."""
     toml_text, n_job = re.subn(r"(?m)^feed_mm_rev\s*=\s*[0-9.]+", f"feed_mm_rev = {feed_mm_rev}", toml_text)
-    program_text, n_prog = re.subn(r"(?m)^(G95 G1 Z[0-9.]+) F[0-9.]+", rf"\g<1> F{feed_mm_rev}", program_text)
+    program_text, n_prog = re.subn(r"(?m)^(G95 G1 [^F\n]*)F[0-9.]+", rf"\g<1>F{feed_mm_rev}", program_text)
     if n_job != 1 or n_prog != 1:
         fail(f"feed lines found: {n_job} in piston.toml, {n_prog} in piston.ngc (want one each)")
     return toml_text, program_text
@@ -202,15 +203,16 @@ def counts_since_index(rows):
     return out
 
 
-def reference(args, table, work, name, rows, turn, column):
+def reference(args, table, work, name, rows, turn, column, centred=True):
     """cam_reference over `rows`: the sampled `column` against nckit's cam at the count since
-    the index and Z, about the stroke reference at Z (where nckit_cam wants the servo)."""
+    the index and Z; `centred`: about the stroke reference at Z (where nckit_cam wants the servo),
+    otherwise the drawn radius itself."""
     path = os.path.join(work, name)
     with open(path, "w") as f:
         for row, k in zip(rows, turn):
             f.write(f"{k} {row[Z]!r} {row[column]!r}\n")
-    out = subprocess.run([args.reference, table, str(COUNTS_PER_TURN), path, "centred"], capture_output=True,
-                         text=True, timeout=120)
+    out = subprocess.run([args.reference, table, str(COUNTS_PER_TURN), path] + (["centred"] if centred else []),
+                         capture_output=True, text=True, timeout=120)
     if out.returncode != 0:
         fail(f"cam_reference failed: {out.stderr.strip()[:300]}")
     result = json.loads(out.stdout)
@@ -236,6 +238,7 @@ def check(rows, nckit, args, work, table):
     # that tick's cam value, and as nckit_cam reads its feedback pin.
     for row, before in zip(rows[1:], rows):
         row.append(before[POSITION])
+        row.append(row[X] + before[POSITION])
     cut = [(r, k) for r, k in zip(rows[1:], turn[1:]) if z_from < r[Z] < z_to]
     feed_mm_rev = nckit["feed_mm_rev"]
     turns = (z_to - z_from) / feed_mm_rev
@@ -254,18 +257,24 @@ def check(rows, nckit, args, work, table):
              f"{wanted['at_counts']}, Z {wanted['at_z_mm']}")
     profile = reference(args, table, work, "profile.txt", cut_rows, cut_turn, POSITION_BEFORE)
     pv = (profile["max_signed_engine_mm"] - profile["min_signed_engine_mm"]) * 1e3
+    turned = reference(args, table, work, "turned.txt", cut_rows, cut_turn, TIP, centred=False)
+    turned_pv = (turned["max_signed_engine_mm"] - turned["min_signed_engine_mm"]) * 1e3
     pin_errors_um = [r[ERROR] * 1e3 for r in cut_rows]
     rms = math.sqrt(sum(e * e for e in pin_errors_um) / len(pin_errors_um))
     run = "learning" if args.learning else "feedforward"
     want = nckit["profile_error_um"][run]["pv"]
     figures = {"run": run, "feed_mm_rev": feed_mm_rev, "hal_pv_um": round(pv, 4),
                "error_pin_pv_um": round(max(pin_errors_um) - min(pin_errors_um), 4), "error_pin_rms_um": round(rms, 4),
+               "turned_pv_um": round(turned_pv, 4), "turned_max_um": round(turned["max_engine_error_mm"] * 1e3, 4),
                "nckit_pv_um": round(want, 4), "wanted_vs_cam_mm": wanted["max_engine_error_mm"],
                "cut_periods": len(cut_rows), "z_mm": [round(min(z), 4), round(max(z), 4)], "spindle_rpm": round(rpm, 2)}
     allowed = max(0.02, 0.5 * want) if args.learning else 0.1 * want
     if abs(pv - want) > allowed:
         fail(f"profile error {pv:.4f} um P-V on the machine against nckit's {want:.4f} um "
              f"(allowed +-{allowed:.4f}): {json.dumps(figures)}")
+    if abs(turned_pv - want) > allowed:
+        fail(f"the turned radius (X + servo) is {turned_pv:.4f} um P-V off the drawing against nckit's "
+             f"{want:.4f} um (allowed +-{allowed:.4f}): {json.dumps(figures)}")
     return figures
 
 
