@@ -301,6 +301,10 @@ def parent_main(args):
                 os.chmod(path, 0o1777 if os.path.isdir(path) else 0o666)
             os.chmod(os.path.join(work, "display.sh"), 0o755)
             os.chmod(work, 0o1777)
+        elif not os.access(env.get("HOME", ""), os.W_OK):
+            # LinuxCNC writes its logs and (uspace) its rtapi socket under HOME: a user without
+            # one (nobody's /nonexistent) gets the scratch folder.
+            env["HOME"] = work
         t0 = time.monotonic()
         log = rm.run_linuxcnc(args, work, ini_path, env)
         wall_s = time.monotonic() - t0
