@@ -2,7 +2,7 @@
 
   profile_error.py SAMPLES.txt NCKIT.json [LEARNING]
 
-SAMPLES: halsampler -t lines `tag counts z wanted command position error [fault]` (from
+SAMPLES: halsampler -t lines `tag counts z wanted command position error [fault index x]` (from
 piston_lathe.hal, or from piston_sampler.hal on the machine of piston_machine.ini). The cut is
 every sample while Z is between the crown (its first value) and its end (its largest value);
 the error there is the axis position minus where the cam wants it (nckit_cam's error pin): its
