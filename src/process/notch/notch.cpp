@@ -14,6 +14,7 @@ namespace nckit {
 namespace {
 
 using notch_detail::CutRecord;
+using notch_detail::CutRecords;
 
 //! Runs `reader` to its end, handing each move to `on_move`; the diagnostic that stopped it.
 Diagnostics each_move(MoveReader& reader, const std::function<void(const Move&)>& on_move) {
