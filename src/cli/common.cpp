@@ -151,7 +151,7 @@ std::optional<Diagnostic> program_file_mistake(const std::string& path) {
 }  // namespace
 
 std::optional<Interpreter> open_program_or_report(const std::string& program_path, const MachineOptions& options,
-                                                  bool keep_retained) {
+                                                  bool keep_retained, bool warn) {
     auto machine = load_machine_or_report(options.machine);
     if (!machine) return std::nullopt;
     if (auto mistake = program_file_mistake(program_path)) {
@@ -182,7 +182,9 @@ std::optional<Interpreter> open_program_or_report(const std::string& program_pat
     interpreter.save_retained = keep_retained;
     interpreter.keep_going_after_errors = options.keep_going;
     interpreter.retained_start = options.retained_start;
-    interpreter.on_warning = [](const Diagnostic& warning) { print_diagnostic(warning); };
+    interpreter.on_warning = [warn](const Diagnostic& warning) {
+        if (warn) print_diagnostic(warning);
+    };
     if (!options.vars.empty()) {
         interpreter.retained_file = options.vars;
     } else if (!options.machine.empty() && machine->dialect == Dialect::fanuc) {

@@ -47,10 +47,11 @@ void print_diagnostics(const Diagnostics& diagnostics);
 
 //! An interpreter over FILE ("-": standard input); errors are printed. The run reads #500-#999
 //! and writes their file back only with `keep_retained` (`nckit moves --save-vars`): looking at
-//! a program never changes files as a side effect.
+//! a program never changes files as a side effect. Without `warn`, the program's warnings are
+//! not printed (a verb that runs the program again, after a first run has printed them).
 [[nodiscard]] std::optional<Interpreter> open_program_or_report(const std::string& program_path,
                                                                 const MachineOptions& options,
-                                                                bool keep_retained = false);
+                                                                bool keep_retained = false, bool warn = true);
 
 //! Progress over the main program (blocks, rate, share of the file read) for `verb`.
 class ProgramProgress {

@@ -1,6 +1,8 @@
 // Laser notching: run-up distance, speed along the cut before and after, refusals.
 #include <gtest/gtest.h>
 
+#include <random>
+#include <set>
 #include <string>
 #include <variant>
 #include <vector>
@@ -9,6 +11,8 @@
 #include "nckit/interp/interpreter.hpp"
 #include "nckit/plan/profile.hpp"
 #include "nckit/process/notch/notch.hpp"
+#include "../../src/process/notch/notch_geometry.hpp"
+#include "../../src/process/notch/notch_index.hpp"
 
 namespace nckit {
 namespace {
@@ -163,6 +167,70 @@ TEST(Notch, ProgramWithoutLaserCodesIsUnchanged) {
     ASSERT_TRUE(rewrite.ok());
     EXPECT_TRUE(rewrite->cuts.empty());
     EXPECT_EQ(rewrite->moves.size(), moves.size());
+}
+
+// Property: the sweep index behind the streamed checks misses no segment within the pad (it may
+// visit more), for random short and long segments and queries over two axes.
+TEST(NotchIndex, VisitsEverySegmentWithinThePad) {
+    std::mt19937 random(10);
+    std::uniform_real_distribution<double> place(-50.0, 50.0);
+    std::uniform_real_distribution<double> reach(-3.0, 3.0);
+    for (int round = 0; round < 50; ++round) {
+        std::vector<notch_detail::SweepIndex::Segment> segments;
+        for (int i = 0; i < 200; ++i) {
+            AxisVector from;
+            from[Axis::X] = place(random);
+            from[Axis::Z] = place(random);
+            AxisVector to = from;
+            const double k = i % 20 == 0 ? 10.0 : 1.0;  // a few long ones
+            to[Axis::X] += k * reach(random);
+            to[Axis::Z] += k * reach(random);
+            segments.push_back({from, to});
+        }
+        const notch_detail::SweepIndex index(segments);
+        for (int q = 0; q < 50; ++q) {
+            AxisVector a;
+            a[Axis::X] = place(random);
+            a[Axis::Z] = place(random);
+            AxisVector b = a;
+            b[Axis::X] += 4 * reach(random);
+            b[Axis::Z] += 4 * reach(random);
+            const double pad_mm = 0.5;
+            std::set<std::size_t> visited;
+            index.query(a, b, pad_mm, [&](std::size_t i) { visited.insert(i); });
+            for (std::size_t i = 0; i < segments.size(); ++i) {
+                if (notch_detail::segment_distance(a, b, segments[i].from, segments[i].to) < pad_mm) {
+                    EXPECT_TRUE(visited.count(i)) << "round " << round << " query " << q << " segment " << i;
+                }
+            }
+        }
+    }
+}
+
+// The streamed job hands out the same cuts as the move list gives, and the cuts in order.
+TEST(Notch, StreamedJobHandsOutTheCutsInOrder) {
+    const MachineConfig machine = notcher();
+    const std::vector<Move> moves = program(
+        "G1 X10 Z50 F3000\nG1 Z20 F5000\nM27\nG1 Z5 F950\nM28\nG0 X30 Z25\nG1 Z20 F3000\nM27\nG1 Z10 F1200\n"
+        "M27\nG1 X40 F800\nM28\nG0 X60 Z40\nM30\n",
+        machine);
+    Result<NotchJob> job = notch_program(moves, machine, "t.nc");
+    ASSERT_TRUE(job.ok()) << format_diagnostic(job.diagnostics().front());
+    ASSERT_EQ(job->cuts.size(), 3U);
+    EXPECT_EQ(job->cuts[0].feed_mm_min, 950);
+    EXPECT_EQ(job->cuts[1].feed_mm_min, 1200);
+    EXPECT_EQ(job->cuts[2].feed_mm_min, 800);
+    for (const NotchCut& cut : job->cuts) {
+        EXPECT_NEAR(cut.after.min_mm_min, cut.feed_mm_min, 1e-3 * cut.feed_mm_min);
+        EXPECT_NEAR(cut.after.covered_mm, cut.length_mm, 1e-6);
+        EXPECT_LT(cut.before.min_mm_min, 1.0);
+    }
+    // Pass 1's planner check: a move the planner refuses fails the job before any cut.
+    std::vector<Move> no_feed = moves;
+    std::get<Line>(no_feed[0].what).feed.mm_per_min = 0;
+    Result<NotchJob> refused = notch_program(no_feed, machine, "t.nc");
+    ASSERT_FALSE(refused.ok());
+    EXPECT_EQ(refused.diagnostics().front().code, "no-feed");
 }
 
 }  // namespace

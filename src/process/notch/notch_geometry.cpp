@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "nckit/plan/path_segment.hpp"
+#include "notch_index.hpp"
 
 namespace nckit::notch_detail {
 
@@ -83,6 +84,47 @@ double segment_distance(const AxisVector& p0, const AxisVector& p1, const AxisVe
     }
     const AxisVector gap = (p0 + scaled(d1, s)) - (q0 + scaled(d2, t));
     return std::sqrt(dot(gap, gap));
+}
+
+}  // namespace nckit::notch_detail
+
+namespace nckit::notch_detail {
+
+SweepIndex::SweepIndex(const std::vector<Segment>& segments) {
+    // The axis along which the segments' starts spread most separates them best.
+    double best_spread = -1;
+    for (std::size_t a = 0; a < axis_count && !segments.empty(); ++a) {
+        double lo = segments.front().from[a];
+        double hi = lo;
+        for (const Segment& s : segments) {
+            lo = std::min(lo, s.from[a]);
+            hi = std::max(hi, s.from[a]);
+        }
+        if (hi - lo > best_spread) {
+            best_spread = hi - lo;
+            axis_ = a;
+        }
+    }
+    entries_.reserve(segments.size());
+    for (std::size_t i = 0; i < segments.size(); ++i) {
+        const double a = segments[i].from[axis_];
+        const double b = segments[i].to[axis_];
+        entries_.push_back({std::min(a, b), std::max(a, b), static_cast<std::uint32_t>(i)});
+        max_extent_ = std::max(max_extent_, std::abs(b - a));
+    }
+    std::sort(entries_.begin(), entries_.end(), [](const Entry& x, const Entry& y) { return x.lo < y.lo; });
+}
+
+void SweepIndex::query(const AxisVector& from, const AxisVector& to, double pad_mm,
+                       const std::function<void(std::size_t)>& visit) const {
+    const double lo = std::min(from[axis_], to[axis_]) - pad_mm;
+    const double hi = std::max(from[axis_], to[axis_]) + pad_mm;
+    // An entry overlaps when entry.lo <= hi and entry.hi >= lo; entry.hi <= entry.lo + max_extent_.
+    auto first = std::lower_bound(entries_.begin(), entries_.end(), lo - max_extent_,
+                                  [](const Entry& e, double v) { return e.lo < v; });
+    for (auto it = first; it != entries_.end() && it->lo <= hi; ++it) {
+        if (it->hi >= lo) visit(it->id);
+    }
 }
 
 }  // namespace nckit::notch_detail

@@ -10,6 +10,7 @@
 
 #include "nckit/process/notch/notch.hpp"
 #include "notch_geometry.hpp"
+#include "notch_passes.hpp"
 
 namespace nckit {
 
@@ -27,8 +28,10 @@ constexpr double max_samples_per_piece = 20000;
 //! profile along the programmed cut.
 class SpeedStats {
 public:
-    SpeedStats(const NotchCut& cut, const AxisVector& rate, std::size_t points)
-        : cut_(cut), rate_(rate), points_(std::max<std::size_t>(points, 2)) {}
+    SpeedStats(const NotchCut& cut, std::size_t points)
+        : cut_(&cut),
+          rate_(scaled(cut.end - cut.start, 1.0 / cut.length_mm)),
+          points_(std::max<std::size_t>(points, 2)) {}
 
     void add(double s, double speed) {
         if (count_ == 0) {
@@ -67,15 +70,15 @@ public:
 
 private:
     [[nodiscard]] double point_s(std::size_t k) const {
-        return cut_.length_mm * static_cast<double>(k) / static_cast<double>(points_ - 1);
+        return cut_->length_mm * static_cast<double>(k) / static_cast<double>(points_ - 1);
     }
     void push_point(double s, double speed) {
         const double coordinate =
-            cut_.profile_axis ? cut_.start[*cut_.profile_axis] + s * rate_[*cut_.profile_axis] : s;
+            cut_->profile_axis ? cut_->start[*cut_->profile_axis] + s * rate_[*cut_->profile_axis] : s;
         out_.profile.push_back({coordinate, speed});
     }
 
-    const NotchCut& cut_;
+    const NotchCut* cut_;
     AxisVector rate_;
     std::size_t points_;
     std::size_t next_point_ = 0;
@@ -87,46 +90,131 @@ private:
     CutSpeed out_;
 };
 
-}  // namespace
+//! Whether a motion piece runs along the cut's line towards its end and overlaps it.
+bool on_cut(const TrajectoryPiece& piece, const NotchCut& cut) {
+    if (piece.segment.shape != SegmentShape::line || !(piece.duration_s > 0)) return false;
+    const AxisVector rate = scaled(cut.end - cut.start, 1.0 / cut.length_mm);
+    const AxisVector along = piece.segment.rate - rate;
+    const AxisVector offset = piece.segment.origin - cut.start;
+    const double s0 = dot(offset, rate) / dot(rate, rate);
+    const AxisVector off_line = offset - scaled(rate, s0);
+    const double s1 = s0 + piece.segment.length;
+    return std::sqrt(dot(along, along)) <= 1e-9 && std::sqrt(dot(off_line, off_line)) <= on_line_mm &&
+           s1 >= -on_line_mm && s0 <= cut.length_mm + on_line_mm;
+}
 
-CutSpeed measure_cut_speed(const Trajectory& trajectory, const NotchCut& cut, const NotchOptions& options) {
+//! The samples of a piece on the cut, in time order.
+void sample_piece(const TrajectoryPiece& piece, const NotchCut& cut, const NotchOptions& options, SpeedStats& stats) {
     const double length = cut.length_mm;
     const AxisVector rate = scaled(cut.end - cut.start, 1.0 / length);
     const double rate_sq = dot(rate, rate);
-    SpeedStats stats(cut, rate, options.profile_points);
+    const double period_s = std::max(options.sample_period_s, piece.duration_s / max_samples_per_piece);
+    const auto steps = static_cast<std::int64_t>(std::ceil(piece.duration_s / period_s));
+    for (std::int64_t k = 0; k <= steps; ++k) {
+        const double t = piece.start_time_s + piece.duration_s * static_cast<double>(k) / static_cast<double>(steps);
+        const TrajectorySample state = sample(piece, t);
+        const double s = dot(state.position - cut.start, rate) / rate_sq;
+        if (s < -on_line_mm || s > length + on_line_mm) continue;
+        stats.add(std::clamp(s, 0.0, length), state.path_velocity * 60.0);
+    }
+}
+
+}  // namespace
+
+CutSpeed measure_cut_speed(const Trajectory& trajectory, const NotchCut& cut, const NotchOptions& options) {
+    SpeedStats stats(cut, options.profile_points);
     bool started = false;
     for (const TrajectoryPiece& piece : trajectory.pieces) {
         // Dwells, I/O and waits between the pieces of the cut take no path; a motion piece that
         // is not on the cut ends it once it has started.
         if (piece.kind != PieceKind::motion) continue;
-        bool on_cut = piece.segment.shape == SegmentShape::line;
-        double s0 = 0;
-        if (on_cut) {
-            const AxisVector along = piece.segment.rate - rate;
-            const AxisVector offset = piece.segment.origin - cut.start;
-            s0 = dot(offset, rate) / rate_sq;
-            const AxisVector off_line = offset - scaled(rate, s0);
-            const double s1 = s0 + piece.segment.length;
-            on_cut = std::sqrt(dot(along, along)) <= 1e-9 && std::sqrt(dot(off_line, off_line)) <= on_line_mm &&
-                     s1 >= -on_line_mm && s0 <= length + on_line_mm && piece.duration_s > 0;
-        }
-        if (!on_cut) {
+        if (!on_cut(piece, cut)) {
             if (started) break;
             continue;
         }
         started = true;
-        const double period_s = std::max(options.sample_period_s, piece.duration_s / max_samples_per_piece);
-        const auto steps = static_cast<std::int64_t>(std::ceil(piece.duration_s / period_s));
-        for (std::int64_t k = 0; k <= steps; ++k) {
-            const double t =
-                piece.start_time_s + piece.duration_s * static_cast<double>(k) / static_cast<double>(steps);
-            const TrajectorySample state = sample(piece, t);
-            const double s = dot(state.position - cut.start, rate) / rate_sq;
-            if (s < -on_line_mm || s > length + on_line_mm) continue;
-            stats.add(std::clamp(s, 0.0, length), state.path_velocity * 60.0);
-        }
+        sample_piece(piece, cut, options, stats);
     }
     return stats.finish();
 }
 
+namespace notch_detail {
+
+struct CutMeter::Active {
+    std::size_t cut;
+    SpeedStats stats;
+};
+
+namespace {
+
+std::vector<SweepIndex::Segment> cut_lines(const CutRecords& cuts) {
+    std::vector<SweepIndex::Segment> lines;
+    lines.reserve(cuts.size());
+    for (const CutRecord& cut : cuts) lines.push_back({cut.info.start, cut.info.end});
+    return lines;
+}
+
+}  // namespace
+
+CutMeter::CutMeter(const CutRecords& cuts, const NotchOptions& options)
+    : cuts_(cuts), options_(options), index_(cut_lines(cuts)), state_(cuts.size(), State::waiting) {
+    // A piece on a cut lies within on_line_mm of its line, off by at most on_line_mm·|rate| on
+    // one axis: the query's margin covers the largest rate of any cut.
+    for (const CutRecord& cut : cuts) {
+        for (std::size_t a = 0; a < axis_count; ++a) {
+            margin_mm_ = std::max(
+                margin_mm_, on_line_mm * (2.0 + std::abs(cut.info.end[a] - cut.info.start[a]) / cut.info.length_mm));
+        }
+    }
+}
+
+CutMeter::~CutMeter() = default;
+
+void CutMeter::add(const TrajectoryPiece& piece) {
+    if (piece.kind != PieceKind::motion) return;
+    // Measurements under way: this piece goes on, or ends, each of them.
+    for (std::size_t i = 0; i < active_.size();) {
+        Active& active = active_[i];
+        const NotchCut& cut = cuts_[active.cut].info;
+        if (on_cut(piece, cut)) {
+            sample_piece(piece, cut, options_, active.stats);
+            ++i;
+            continue;
+        }
+        state_[active.cut] = State::done;
+        finished_.emplace(active.cut, active.stats.finish());
+        active_.erase(active_.begin() + static_cast<std::ptrdiff_t>(i));
+    }
+    if (piece.segment.shape != SegmentShape::line) return;
+    const AxisVector end = piece.segment.origin + scaled(piece.segment.rate, piece.segment.length);
+    index_.query(piece.segment.origin, end, margin_mm_, [&](std::size_t c) {
+        if (state_[c] != State::waiting || cuts_[c].local_error || !on_cut(piece, cuts_[c].info)) return;
+        state_[c] = State::active;
+        active_.push_back({c, SpeedStats(cuts_[c].info, options_.profile_points)});
+        sample_piece(piece, cuts_[c].info, options_, active_.back().stats);
+    });
+}
+
+void CutMeter::finish() {
+    for (Active& active : active_) {
+        state_[active.cut] = State::done;
+        finished_.emplace(active.cut, active.stats.finish());
+    }
+    active_.clear();
+    for (std::size_t c = 0; c < state_.size(); ++c) {
+        if (state_[c] != State::waiting) continue;
+        // Never on the trajectory: what measure_cut_speed gives for a cut it does not find.
+        state_[c] = State::done;
+        finished_.emplace(c, SpeedStats(cuts_[c].info, options_.profile_points).finish());
+    }
+}
+
+CutSpeed CutMeter::take(std::size_t cut) {
+    auto it = finished_.find(cut);
+    CutSpeed out = std::move(it->second);
+    finished_.erase(it);
+    return out;
+}
+
+}  // namespace notch_detail
 }  // namespace nckit

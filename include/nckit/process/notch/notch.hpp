@@ -8,12 +8,15 @@
 // stop, which the planner places at its point on the path, at speed).
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "nckit/core/diagnostic.hpp"
 #include "nckit/core/machine.hpp"
+#include "nckit/interp/interpreter.hpp"
 #include "nckit/interp/move.hpp"
 #include "nckit/plan/trajectory.hpp"
 
@@ -75,14 +78,52 @@ struct NotchRewrite {
 [[nodiscard]] CutSpeed measure_cut_speed(const Trajectory& trajectory, const NotchCut& cut,
                                          const NotchOptions& options = {});
 
-//! The whole job: rewrite, write the plain program (GcodeWriter, as `nckit expand` does), read
-//! that text back through the interpreter, plan the original and the rewritten moves, and fill
-//! each cut's before/after speeds.
+//! The whole job on a move list held in memory: rewrite, write the plain program (GcodeWriter,
+//! as `nckit expand` does), read that text back through the interpreter, plan the original and
+//! the rewritten moves, and fill each cut's before/after speeds. run_notch_job streams the same.
 struct NotchJob {
     std::vector<NotchCut> cuts;
     std::string program;  //!< the rewritten program text
 };
 [[nodiscard]] Result<NotchJob> notch_program(const std::vector<Move>& moves, const MachineConfig& machine,
                                              const std::string& source_name, const NotchOptions& options = {});
+
+//! One run of a program from its start: each call hands out the next move, then ProgramEnd (or
+//! the Diagnostic that stopped it).
+using MoveReader = std::function<InterpResult()>;
+
+//! What the streamed job reads and where it writes. The original program is run once per pass
+//! (three passes), so memory stays bounded whatever the program's length: what is kept is a
+//! small record per cut, never the moves, the trajectories or the speed samples.
+struct NotchStreams {
+    //! A new run of the original program from its start; nothing when it cannot be opened (the
+    //! opener has said why).
+    std::function<std::optional<MoveReader>()> original;
+    //! Receives the rewritten program's text, in order (pass 2).
+    std::function<void(std::string_view)> write_rewritten;
+    //! A run of the rewritten program as written (pass 3, after the last write_rewritten).
+    std::function<std::optional<MoveReader>()> rewritten;
+    //! Every check passed and the rewritten program is complete: the number of cuts, before the
+    //! first on_cut. False stops the job (the callback has said why).
+    std::function<bool(std::size_t)> on_checked;
+    //! Each cut with its before and after speeds, in program order.
+    std::function<void(NotchCut&&)> on_cut;
+};
+
+//! How a streamed job ended: ok when it ran to the end.
+struct NotchRunStatus {
+    Diagnostics diagnostics;
+    bool stopped = false;  //!< an opener or on_checked stopped it (and reported why)
+    [[nodiscard]] bool ok() const { return diagnostics.empty() && !stopped; }
+};
+
+//! The job in passes over the original program: (1) find the cuts and place their run-ups and
+//! overruns, check that the planner takes the program; (2) check each run-up and overrun against
+//! every other move's path and write the rewritten program; (3) plan the original and the
+//! rewritten program side by side and measure each cut on both, handing the cuts out in order.
+//! Errors of passes 1 and 2 come before anything is handed out, in the order notch_program
+//! gives them.
+[[nodiscard]] NotchRunStatus run_notch_job(const MachineConfig& machine, const std::string& source_name,
+                                           const NotchStreams& streams, const NotchOptions& options = {});
 
 }  // namespace nckit

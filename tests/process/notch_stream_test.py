@@ -1,0 +1,117 @@
+#!/usr/bin/env python3
+"""`nckit notch` streams: its output equals the golden files (made before it streamed), it runs
+a long generated program in bounded memory (peak RSS measured by getrusage of the child), and
+`nckit notch ... | head -1` ends.
+
+Usage: notch_stream_test.py NCKIT REPO_ROOT"""
+import os
+import resource
+import subprocess
+import sys
+import tempfile
+
+nckit, root = sys.argv[1], sys.argv[2]
+golden = os.path.join(root, "tests/process/notch_golden")
+machine = os.path.join(root, "examples/machines/notcher.toml")
+failures = []
+
+
+def check(ok, what):
+    if not ok:
+        failures.append(what)
+        print("FAIL:", what)
+
+
+def run(args, **kwargs):
+    return subprocess.run([nckit, *args], capture_output=True, text=True, cwd=root, **kwargs)
+
+
+def expected(name):
+    with open(os.path.join(golden, name)) as f:
+        return f.read()
+
+
+def peak_rss_mb(args, stdout=subprocess.DEVNULL):
+    """Peak resident memory of one run of nckit (getrusage of this process's waited children)."""
+    before = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss
+    r = subprocess.run([nckit, *args], stdout=stdout, stderr=subprocess.PIPE, text=True, cwd=root)
+    after = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss
+    # ru_maxrss of children is the largest of any child so far: measure runs in rising order.
+    return r, max(before, after) / 1024.0
+
+
+# 1. The same bytes as the whole-program implementation wrote, on every golden program.
+with tempfile.TemporaryDirectory() as tmp:
+    rel = "tests/process/notch_golden"
+    for program in ["examples/notch/conrod.nc", f"{rel}/multi.nc", f"{rel}/oblique.nc", f"{rel}/macro.nc"]:
+        name = os.path.basename(program)[:-3]
+        out = os.path.join(tmp, name + ".nc")
+        r = run(["notch", program, "--machine", machine, "-o", out])
+        check(r.returncode == 0, f"{name}: exit {r.returncode} {r.stderr}")
+        check(r.stdout == expected(name + ".txt.expected"), f"{name}: text report differs")
+        check(open(out).read() == expected(name + ".notched.nc.expected"), f"{name}: rewritten program differs")
+        r = run(["notch", program, "--machine", machine, "--json"])
+        check(r.stdout == expected(name + ".json.expected"), f"{name}: JSON report differs")
+    out = os.path.join(tmp, "stdin.nc")
+    with open(os.path.join(golden, "multi.nc")) as f:
+        r = run(["notch", "-", "--machine", machine, "-o", out], stdin=f)
+    check(r.returncode == 0 and r.stdout == expected("stdin.txt.expected"), "program from standard input: report differs")
+    check(open(out).read() == expected("stdin.notched.nc.expected"), "program from standard input: program differs")
+    # -o - : the rewritten program, then the report, both on standard output.
+    r = run(["notch", "examples/notch/conrod.nc", "--machine", machine, "-o", "-"])
+    check(r.stdout == expected("conrod.notched.nc.expected") + expected("conrod.txt.expected"), "-o -: output differs")
+    never = os.path.join(tmp, "never.nc")
+    r = run(["notch", f"{rel}/crossing.nc", "--machine", machine, "-o", never])
+    check(r.returncode == 2 and r.stderr == expected("crossing.err.expected") and r.stdout == "",
+          f"crossing: exit {r.returncode}, stderr {r.stderr!r}")
+    check(not os.path.exists(never), "crossing: -o written although refused")
+
+    # 2. Long programs. The notches sit 0.5 mm apart along X on a notcher with a long X travel;
+    # filler blocks (short moves above the notches) make a program long without adding cuts.
+    long_machine = os.path.join(tmp, "long_notcher.toml")
+    with open(machine) as f:
+        text = f.read()
+    with open(long_machine, "w") as f:
+        f.write(text.replace("max = 1200.0", "max = 200000.0", 1))
+
+    def write_program(path, notches, fillers_per_notch):
+        with open(path, "w") as f:
+            f.write("G90 G1 X0 Z40 F3000\n")
+            for i in range(notches):
+                x = 10 + 0.5 * i
+                for k in range(fillers_per_notch):
+                    f.write(f"G1 X{x - 0.25:.3f} Z{40 + (k % 2):d} F3000\n")
+                f.write(f"G0 X{x:.3f} Z30\nG1 Z20 F4000\nM27\nG1 Z8 F900\nM28\n")
+            f.write(f"G0 X{10 + 0.5 * notches + 5:.3f} Z40\nM30\n")
+
+    few = os.path.join(tmp, "few_notches_short.nc")
+    few_long = os.path.join(tmp, "few_notches_long.nc")
+    many = os.path.join(tmp, "many_notches.nc")
+    write_program(few, 100, 1)
+    write_program(few_long, 100, 1000)      # 100,000 filler blocks
+    write_program(many, 20000, 0)           # 20,000 notches, 100,000 blocks
+    r, short_mb = peak_rss_mb(["notch", few, "--machine", long_machine, "--json"])
+    check(r.returncode == 0, f"short program: {r.stderr}")
+    r, long_mb = peak_rss_mb(["notch", few_long, "--machine", long_machine, "--json"])
+    check(r.returncode == 0, f"long program: {r.stderr}")
+    # The same 100 cuts with 1000 times the blocks: memory does not grow with the blocks.
+    check(long_mb < short_mb + 16, f"peak memory grows with blocks: {short_mb:.1f} MB -> {long_mb:.1f} MB")
+    r, many_mb = peak_rss_mb(["notch", many, "--machine", long_machine, "-o", os.path.join(tmp, "many_out.nc")])
+    check(r.returncode == 0, f"many notches: {r.stderr}")
+    check(r.stderr == "", f"many notches: {r.stderr}")
+    # 20,000 cuts: a small record each (the whole-program version held every move, both
+    # trajectories and 2 x 201 profile points per cut).
+    per_cut_bytes = (many_mb - short_mb) * 1024 * 1024 / 20000
+    check(per_cut_bytes < 1500, f"peak memory per cut {per_cut_bytes:.0f} bytes ({many_mb:.1f} MB)")
+    print(f"peak RSS: 100 cuts {short_mb:.1f} MB, 100 cuts + 100k blocks {long_mb:.1f} MB, "
+          f"20k cuts {many_mb:.1f} MB ({per_cut_bytes:.0f} bytes per cut)")
+
+    # 3. `| head -1` ends the run: the report's first line comes before the job is done.
+    p = subprocess.Popen(f"'{nckit}' notch '{many}' --machine '{long_machine}' | head -1", shell=True,
+                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    first, _ = p.communicate(timeout=1200)
+    check(first == f"{many}: 20000 notch cut(s)\n", f"head -1: {first!r}")
+
+if failures:
+    sys.exit(1)
+print("ok")
