@@ -109,6 +109,17 @@ void add_tool_path(Payload& payload, const ToolPathSection& section) {
     h["top_speed_mm_s"] = top;
     payload.add_delta("vertex_xyz", xyz, quantum_mm);
     payload.add_u8("vertex_speed", speed);
+    std::vector<double> places;
+    places.reserve(r.point_places.size() * 3);
+    std::vector<std::uint8_t> place_speed;
+    place_speed.reserve(r.point_places.size());
+    for (const ReportVertex& v : r.point_places) {
+        places.insert(places.end(), {v.x_mm, v.y_mm, v.z_mm});
+        const double level = top > 0 ? std::min(1.0, v.speed_mm_s / top) : 0.0;
+        place_speed.push_back(static_cast<std::uint8_t>(std::lround(255.0 * level)));
+    }
+    payload.add_delta("point_xyz", places, quantum_mm);
+    payload.add_u8("point_speed", place_speed);
 
     const TimeSamples& s = r.samples;
     nlohmann::json axes = nlohmann::json::array();

@@ -20,6 +20,7 @@ const specs = JSON.parse(readFileSync(opt("--specs"), "utf8")).filter((s) => !on
 // or geometry moves far more than this.
 const SCREENSHOT_TOLERANCE = 0.01;
 const MAGENTA = [255, 0, 255];
+const DOT = [20, 20, 20]; // the dark rim of a dot
 
 mkdirSync(dir, { recursive: true });
 let failures = 0;
@@ -106,6 +107,30 @@ async function testPage(browser, spec) {
       const png = decode(await canvas.screenshot({ type: "png" }));
       const lit = hasColorNear(png, p.x - now.x, p.y - now.y, MAGENTA, 3, 40);
       check(selected === expected && lit, `click on line ${line}: selects move ${selected + 1} (its first move: ${expected + 1}), drawn in magenta there: ${lit}`);
+    }
+
+    // Moves drawn as dots (no length of their own: a move to where the tool stands, or one the
+    // transitions of its two corners ate whole): each is visible where the page says it is, a
+    // click on it selects it (over the lines through it) and the code pane marks its line.
+    const dots = await page.evaluate(() => window.nckitReport.dotMoves());
+    if (spec.dots !== undefined) check(dots.length === spec.dots, `${dots.length} move(s) drawn as dots (expected ${spec.dots})`);
+    for (const m of dots.slice(0, 8)) {
+      await page.evaluate(() => window.nckitReport.select(-1));
+      await frames(page);
+      const now = await canvas.boundingBox();
+      const p = await page.evaluate((m) => window.nckitReport.segmentScreenPoint(m), m);
+      const before = decode(await canvas.screenshot({ type: "png" }));
+      const seen = hasColorNear(before, p.x - now.x, p.y - now.y, DOT, 3, 30);
+      await page.mouse.click(p.x, p.y);
+      await frames(page);
+      const got = await page.evaluate(() => {
+        const r = window.nckitReport;
+        return { move: r.selectedMove, marked: r.markedLine(), own: r.selectedMove >= 0 ? r.lineOfMove(r.selectedMove)[1] : -1 };
+      });
+      const after = decode(await canvas.screenshot({ type: "png" }));
+      const lit = hasColorNear(after, p.x - now.x, p.y - now.y, MAGENTA, 2, 40);
+      check(seen && got.move === m && got.marked === got.own && lit,
+        `dot of move ${m + 1} (line ${got.own}): drawn ${seen}, a click selects move ${got.move + 1}, the code pane marks line ${got.marked}, drawn in magenta ${lit}`);
     }
 
     // The slider places the tool where `nckit plan --trace` has it at the slider's time.
