@@ -49,10 +49,11 @@ struct ToolPathRecorder::Impl {
     std::vector<bool> exact_stop;      //!< per move: G61/G9 at its end
     std::size_t finalized = 0;         //!< moves before this have their vertices and times
     std::optional<OpenMove> open;
-    std::optional<Junction> boundary;       //!< what happened since the last main piece, if anything
-    std::vector<BlendStart> run_blends;     //!< blend pieces since the last main piece, in order
-    std::size_t run_first_free = 0;         //!< run_blends before this are not another move's
-    std::map<std::size_t, Place> consumed;  //!< moves eaten by transitions: where they are drawn
+    std::optional<Junction> boundary;              //!< what happened since the last main piece, if anything
+    std::vector<BlendStart> run_blends;            //!< blend pieces since the last main piece, in order
+    std::size_t run_first_free = 0;                //!< run_blends before this are not another move's
+    std::map<std::size_t, Place> consumed;         //!< moves eaten by transitions: where they are drawn
+    std::map<std::size_t, ReportVertex> standing;  //!< moves that go nowhere: their programmed point
     PeakTracker peaks;
     TimeSampler sampler;
     double time_s = 0;  //!< end of the last piece
@@ -102,7 +103,11 @@ struct ToolPathRecorder::Impl {
         }
         out.file = file_of(move.where);
         out.line = move.where.line;
-        if (length > min_move_length) awaiting.push_back(report.moves.size());
+        if (length > min_move_length) {
+            awaiting.push_back(report.moves.size());
+        } else if (const auto* line = std::get_if<Line>(&move.what)) {
+            standing[report.moves.size()] = {line->to[Axis::X], line->to[Axis::Y], line->to[Axis::Z], 0.0};
+        }
         report.moves.push_back(out);
         exact_stop.push_back(stops);
     }
@@ -117,13 +122,17 @@ struct ToolPathRecorder::Impl {
             const auto later = consumed.lower_bound(finalized);
             m.start_s = m.end_s = later != consumed.end() ? std::min(time_s, later->second.time_s) : time_s;
             ReportVertex at = report.vertices.empty() ? ReportVertex{} : report.vertices.back();
-            if (auto it = consumed.find(finalized); it != consumed.end()) {
-                at = it->second.at;
-                m.start_s = m.end_s = it->second.time_s;
+            if (auto stands = standing.find(finalized); stands != standing.end()) {
+                // Where the program puts it: under G64 the path may pass that corner inside it.
+                at = {stands->second.x_mm, stands->second.y_mm, stands->second.z_mm, at.speed_mm_s};
+                standing.erase(stands);
+            } else if (auto eaten = consumed.find(finalized); eaten != consumed.end()) {
+                at = eaten->second.at;
+                m.start_s = m.end_s = eaten->second.time_s;
                 m.peak_mm_s = at.speed_mm_s;
                 const bool cuts = m.kind == ReportMoveKind::feed || m.kind == ReportMoveKind::arc;
                 if (cuts && at.speed_mm_s < reached_fraction * m.feed_mm_s) m.slowdown = Slowdown::corner;
-                consumed.erase(it);
+                consumed.erase(eaten);
             }
             report.point_places.push_back(at);
         }

@@ -130,10 +130,10 @@ TEST(ToolPathRecorder, MovesEatenByTheirCornersAreDotsOnThePath) {
     EXPECT_GT(moves[1].start_s, moves[0].start_s);
     EXPECT_LT(moves[1].start_s, moves[2].start_s);
     EXPECT_GT(moves[1].peak_mm_s, 0);
-    // The dot of the move that goes nowhere is where the tool stands: the end of move 3.
-    const ReportVertex& end3 = r.report.vertices[moves[2].vertex_end];
-    EXPECT_NEAR(r.report.point_places[1].x_mm, end3.x_mm, 1e-12);
-    EXPECT_NEAR(r.report.point_places[1].y_mm, end3.y_mm, 1e-12);
+    // The dot of the move that goes nowhere is its programmed point (the corner that the
+    // path rounds within P0.2).
+    EXPECT_NEAR(r.report.point_places[1].x_mm, 20.1, 1e-12);
+    EXPECT_NEAR(r.report.point_places[1].y_mm, 20, 1e-12);
 }
 
 TEST(ToolPathRecorder, SlowdownCausesOnProgramsWhoseCauseIsKnown) {

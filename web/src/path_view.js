@@ -45,7 +45,7 @@ export function createPathView(container, path, onPick) {
   // The selected dot: a larger magenta one over it.
   const pointMark = new THREE.Points(pathGeometry(new Float32Array(3), Uint8Array.from([255, 0, 255])), pathMaterial({ pointSize: 13, round: true, onTop: true }));
   pointMark.visible = false;
-  pointMark.renderOrder = 2;
+  pointMark.renderOrder = 4; // over the tool, which the selection moves onto it
   scene.add(pointMark);
 
   // The selected move, 4 px wide over everything (WebGL draws plain lines 1 px wide).
