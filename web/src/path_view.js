@@ -225,5 +225,5 @@ export function createPathView(container, path, onPick) {
   let drawnCount = 0;
   for (let m = 0; m < moveCount; m++) drawnCount += drawn[m];
   resize();
-  return { select, placeTool, screenPoint, distanceToMove, pick, warmUp, dotMoves: pointMove, drawnSegments: drawnCount, canvas: renderer.domElement, render: renderNow };
+  return { select, placeTool, screenPoint, distanceToMove, pick, warmUp, dotMoves: pointMove, dotsRimmed: fewDots, drawnSegments: drawnCount, canvas: renderer.domElement, render: renderNow };
 }

@@ -226,6 +226,7 @@ export function buildToolPathPage(root, header, blob) {
     canvas: path.canvas,
     warmUp: () => path.warmUp(),
     dotMoves: () => Array.from(path.dotMoves),
+    dotsRimmed: path.dotsRimmed,
     select: (m) => select(m, true),
   };
   setTime(0, true);
