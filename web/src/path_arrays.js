@@ -5,9 +5,10 @@ import { speedColor } from "./colors.js";
 const RAPID = 0;
 
 //! moveKind, vertexEnd: per move; xyz: the vertices (3 per vertex); speed: a byte per vertex;
-//! pointXyz, pointSpeed: where each move with an empty polyline is drawn, in move order (3 per
-//! such move), and the speed byte there (absent: at its vertex, with its speed).
-export function pathArrays({ moveKind, vertexEnd, xyz, speed, pointXyz, pointSpeed }) {
+//! pointOffset, pointSpeed: where each move with an empty polyline is drawn, in move order, as
+//! its offset from the vertex it ends at (3 per such move), and the speed byte there (absent:
+//! at that vertex, with its speed).
+export function pathArrays({ moveKind, vertexEnd, xyz, speed, pointOffset, pointSpeed }) {
   const moveCount = moveKind.length;
   const vertexCount = xyz.length / 3;
 
@@ -79,10 +80,10 @@ export function pathArrays({ moveKind, vertexEnd, xyz, speed, pointXyz, pointSpe
     const to = vertexEnd[m];
     if (to === from) {
       // A move with no polyline of its own: a dot where the page says it is.
-      const placed = pointXyz && pointSpeed && pointXyz.length >= 3 * (p + 1);
+      const placed = pointOffset && pointSpeed && pointOffset.length >= 3 * (p + 1);
       for (let k = 0; k < 3; k++) {
-        const at = placed ? pointXyz[3 * p + k] : vertexCount ? xyz[3 * to + k] : 0;
-        pointPos[3 * p + k] = at - centre[k];
+        const vertex = vertexCount ? xyz[3 * to + k] : 0;
+        pointPos[3 * p + k] = vertex + (placed ? pointOffset[3 * p + k] : 0) - centre[k];
       }
       const level = placed ? pointSpeed[p] : vertexCount ? speed[to] : 0;
       pointCol.set(ramp.subarray(3 * level, 3 * level + 3), 3 * p);

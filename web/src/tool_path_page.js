@@ -30,7 +30,7 @@ export function buildToolPathPage(root, header, blob) {
   const slow = blob("move_slowdown");
   const xyz = blob("vertex_xyz");
   const speed = blob("vertex_speed");
-  const pointXyz = header.blobs.point_xyz ? blob("point_xyz") : null;
+  const pointOffset = header.blobs.point_offset_xyz ? blob("point_offset_xyz") : null;
   const pointSpeed = header.blobs.point_speed ? blob("point_speed") : null;
   const axes = tp.samples.axes;
   const samples = { t: blob("sample_t"), speed: blob("sample_speed"), pos: {}, vel: {}, acc: {}, jerk: {} };
@@ -85,7 +85,7 @@ export function buildToolPathPage(root, header, blob) {
 
   let selected = -1;
   lap("figures");
-  const path = createPathView(view3d, { moveKind, vertexEnd, xyz, speed, pointXyz, pointSpeed, hasY: axes.includes("Y") }, (m) => select(m, true));
+  const path = createPathView(view3d, { moveKind, vertexEnd, xyz, speed, pointOffset, pointSpeed, hasY: axes.includes("Y") }, (m) => select(m, true));
   lap("path");
   const code = createCodePane(codeBox, tp.files, sources, (file, line) => {
     const m = firstMove[file].get(line);
