@@ -72,13 +72,19 @@ std::string render_report_html(const ReportPage& page) {
     html += escape_html(page.title);
     html += "</title>\n<meta name=\"generator\" content=\"nckit\">\n<style>\n";
     html += report_detail::viewer_css;
-    html += "</style>\n</head>\n<body>\n<div id=\"app\"></div>\n";
+    html += "</style>\n</head>\n<body>\n<div id=\"app\"";
+    // The drawn vertices, so the script can start the 3D view's renderer before it reads the data.
+    if (page.tool_path) html += " data-vertices=\"" + std::to_string(page.tool_path->report.vertices.size()) + "\"";
+    html += "></div>\n";
+    // The script first: it starts the WebGL work while the browser still reads the data, and
+    // reads the data when the document is parsed.
+    html += "<script>\n";
+    html += report_detail::viewer_js;
+    html += "\n</script>\n";
     // base64 has no '<', so the data cannot end its element early.
     html += "<script id=\"nckit-data\" type=\"application/octet-stream\">";
     html += data;
-    html += "</script>\n<script>\n";
-    html += report_detail::viewer_js;
-    html += "\n</script>\n</body></html>\n";
+    html += "</script>\n</body></html>\n";
     return html;
 }
 

@@ -109,6 +109,31 @@ void add_tool_path(Payload& payload, const ToolPathSection& section) {
     h["top_speed_mm_s"] = top;
     payload.add_delta("vertex_xyz", xyz, quantum_mm);
     payload.add_u8("vertex_speed", speed);
+    // A dot lies within a move's length of the vertex its move ends at: stored as its offset
+    // from that vertex, which takes a byte or two where its own coordinates would take more.
+    std::vector<double> offsets;
+    offsets.reserve(r.point_places.size() * 3);
+    std::vector<std::uint8_t> place_speed;
+    place_speed.reserve(r.point_places.size());
+    std::size_t dot = 0;
+    std::uint32_t previous_end = 0;
+    for (std::size_t i = 0; i < r.moves.size() && dot < r.point_places.size(); ++i) {
+        const std::uint32_t move_end = r.moves[i].vertex_end;
+        const bool is_dot = move_end == previous_end;
+        previous_end = move_end;
+        if (!is_dot) continue;
+        const ReportVertex& v = r.point_places[dot++];
+        const ReportVertex base = move_end < r.vertices.size() ? r.vertices[move_end] : ReportVertex{};
+        // On the grid of the vertices, so that vertex + offset is the rounded place.
+        auto q = [&](double x) { return std::llround(x / quantum_mm); };
+        offsets.insert(offsets.end(), {static_cast<double>(q(v.x_mm) - q(base.x_mm)) * quantum_mm,
+                                       static_cast<double>(q(v.y_mm) - q(base.y_mm)) * quantum_mm,
+                                       static_cast<double>(q(v.z_mm) - q(base.z_mm)) * quantum_mm});
+        const double level = top > 0 ? std::min(1.0, v.speed_mm_s / top) : 0.0;
+        place_speed.push_back(static_cast<std::uint8_t>(std::lround(255.0 * level)));
+    }
+    payload.add_delta("point_offset_xyz", offsets, quantum_mm);
+    payload.add_u8("point_speed", place_speed);
 
     const TimeSamples& s = r.samples;
     nlohmann::json axes = nlohmann::json::array();

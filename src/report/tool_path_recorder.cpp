@@ -25,6 +25,19 @@ struct ToolPathRecorder::Impl {
         std::vector<ReportVertex> points;  //!< its polyline, starting at the previous end
     };
 
+    //! Where a corner transition (or blend arc) begins: for a move that no main piece came for,
+    //! the start of the transition its own block made is the middle of its planned path.
+    struct BlendStart {
+        std::uint32_t line = 0;
+        std::string file;
+        ReportVertex at;
+        double time_s = 0;
+    };
+    struct Place {
+        ReportVertex at;
+        double time_s = 0;
+    };
+
     MachineConfig machine;
     ProfileKind kind;
     ToolPathOptions options;
@@ -36,7 +49,11 @@ struct ToolPathRecorder::Impl {
     std::vector<bool> exact_stop;      //!< per move: G61/G9 at its end
     std::size_t finalized = 0;         //!< moves before this have their vertices and times
     std::optional<OpenMove> open;
-    std::optional<Junction> boundary;  //!< what happened since the last main piece, if anything
+    std::optional<Junction> boundary;              //!< what happened since the last main piece, if anything
+    std::vector<BlendStart> run_blends;            //!< blend pieces since the last main piece, in order
+    std::size_t run_first_free = 0;                //!< run_blends before this are not another move's
+    std::map<std::size_t, Place> consumed;         //!< moves eaten by transitions: where they are drawn
+    std::map<std::size_t, ReportVertex> standing;  //!< moves that go nowhere: their programmed point
     PeakTracker peaks;
     TimeSampler sampler;
     double time_s = 0;  //!< end of the last piece
@@ -86,17 +103,51 @@ struct ToolPathRecorder::Impl {
         }
         out.file = file_of(move.where);
         out.line = move.where.line;
-        if (length > min_move_length) awaiting.push_back(report.moves.size());
+        if (length > min_move_length) {
+            awaiting.push_back(report.moves.size());
+        } else if (const auto* line = std::get_if<Line>(&move.what)) {
+            standing[report.moves.size()] = {line->to[Axis::X], line->to[Axis::Y], line->to[Axis::Z], 0.0};
+        }
         report.moves.push_back(out);
         exact_stop.push_back(stops);
     }
 
-    //! Moves before `upto` without a piece of their own are points where the path stands.
+    //! Moves before `upto` without a piece of their own are dots: where their transitions meet
+    //! if they were eaten by them, else where the path stands.
     void finalize_before(std::size_t upto) {
         for (; finalized < upto; ++finalized) {
             ReportMove& m = report.moves[finalized];
             m.vertex_end = static_cast<std::uint32_t>(report.vertices.empty() ? 0 : report.vertices.size() - 1);
-            m.start_s = m.end_s = time_s;
+            // Not after a later move that was eaten: the slider's search needs starts in order.
+            const auto later = consumed.lower_bound(finalized);
+            m.start_s = m.end_s = later != consumed.end() ? std::min(time_s, later->second.time_s) : time_s;
+            ReportVertex at = report.vertices.empty() ? ReportVertex{} : report.vertices.back();
+            if (auto stands = standing.find(finalized); stands != standing.end()) {
+                // Where the program puts it: under G64 the path may pass that corner inside it.
+                at = {stands->second.x_mm, stands->second.y_mm, stands->second.z_mm, at.speed_mm_s};
+                standing.erase(stands);
+            } else if (auto eaten = consumed.find(finalized); eaten != consumed.end()) {
+                at = eaten->second.at;
+                m.start_s = m.end_s = eaten->second.time_s;
+                m.peak_mm_s = at.speed_mm_s;
+                const bool cuts = m.kind == ReportMoveKind::feed || m.kind == ReportMoveKind::arc;
+                if (cuts && at.speed_mm_s < reached_fraction * m.feed_mm_s) m.slowdown = Slowdown::corner;
+                consumed.erase(eaten);
+            }
+            report.point_places.push_back(at);
+        }
+    }
+
+    //! A move with length that no main piece came for: its place is the start of the next
+    //! unclaimed transition its block made, if there is one.
+    void mark_consumed(std::size_t index) {
+        const ReportMove& m = report.moves[index];
+        for (std::size_t b = run_first_free; b < run_blends.size(); ++b) {
+            if (run_blends[b].line == m.line && run_blends[b].file == report.files[m.file]) {
+                consumed[index] = {run_blends[b].at, run_blends[b].time_s};
+                run_first_free = b + 1;
+                return;
+            }
         }
     }
 
@@ -128,7 +179,10 @@ struct ToolPathRecorder::Impl {
                 index = candidate;
                 break;
             }
+            mark_consumed(candidate);
         }
+        run_blends.clear();
+        run_first_free = 0;
         const report_detail::PiecePoints pts = report_detail::piece_points(piece, options.arc_step_deg);
         Junction start = Junction::exact_stop;
         if (open) {
@@ -184,10 +238,12 @@ struct ToolPathRecorder::Impl {
             main_piece(piece);
         } else if (piece.kind == PieceKind::motion) {
             boundary = Junction::corner;
-            if (open) {
-                const report_detail::PiecePoints pts = report_detail::piece_points(piece, options.arc_step_deg);
-                open->points.insert(open->points.end(), pts.points.begin() + 1, pts.points.end());
-            }
+            const report_detail::PiecePoints pts = report_detail::piece_points(piece, options.arc_step_deg);
+            // The first transition after a main piece is that move's own corner; any later one
+            // before the next main piece starts in the middle of a move it ate.
+            if (run_blends.empty() && open) run_first_free = 1;
+            run_blends.push_back({piece.where.line, piece.where.file_name(), pts.points.front(), piece.start_time_s});
+            if (open) open->points.insert(open->points.end(), pts.points.begin() + 1, pts.points.end());
         } else if (piece.kind == PieceKind::dwell || piece.io.waits) {
             boundary = Junction::exact_stop;
         }
@@ -196,6 +252,10 @@ struct ToolPathRecorder::Impl {
     }
 
     ToolPathReport finish() {
+        while (!awaiting.empty()) {
+            if (awaiting.front() >= finalized) mark_consumed(awaiting.front());
+            awaiting.pop_front();
+        }
         close_open(Junction::exact_stop);
         finalize_before(report.moves.size());
         report.peaks = peaks.peaks();

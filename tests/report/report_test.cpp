@@ -2,6 +2,7 @@
 // tolerance, the slowdown rules on programs whose cause is known, the payload's encodings.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <random>
@@ -87,6 +88,52 @@ TEST(ToolPathRecorder, EveryMoveKeepsItsLineAndTimesFollowThePlan) {
     EXPECT_NEAR(last.x_mm, 0, 1e-9);
     EXPECT_NEAR(last.y_mm, 0, 1e-9);
     EXPECT_NEAR(last.z_mm, 5, 1e-9);
+}
+
+//! mm from p to the segment a-b in the XY plane.
+double distance_to_segment(const ReportVertex& p, double ax, double ay, double bx, double by) {
+    const double dx = bx - ax, dy = by - ay;
+    const double len2 = dx * dx + dy * dy;
+    const double t = len2 > 0 ? std::clamp(((p.x_mm - ax) * dx + (p.y_mm - ay) * dy) / len2, 0.0, 1.0) : 0.0;
+    return std::hypot(ax + t * dx - p.x_mm, ay + t * dy - p.y_mm);
+}
+
+TEST(ToolPathRecorder, MovesEatenByTheirCornersAreDotsOnThePath) {
+    // 0.14 mm and 0.1 mm moves between long ones under G64 P0.2: each corner's transition may
+    // take half of the short move, so the two transitions take all of it and no piece of its
+    // own comes. "G1 Y20" to where the tool stands goes nowhere. Every move with an empty
+    // polyline has a place; an eaten one lies on its own programmed segment (where its two
+    // transitions meet), at a time between its neighbours'.
+    const Recorded r =
+        record("G64 P0.2\nG1 X20 F1200\nG1 X20.1 Y0.1\nG1 X20.1 Y20\nG1 Y20\nG1 X20 Y20.1\nG1 X0 Y20.1\nM30\n");
+    const auto& moves = r.report.moves;
+    ASSERT_EQ(moves.size(), 6U);
+    std::size_t dots = 0;
+    for (std::size_t i = 0; i < moves.size(); ++i) {
+        const std::uint32_t from = i > 0 ? moves[i - 1].vertex_end : 0;
+        if (moves[i].vertex_end == from) ++dots;
+        if (i > 0) {
+            EXPECT_GE(moves[i].start_s, moves[i - 1].start_s) << "move " << i;
+        }
+    }
+    ASSERT_EQ(r.report.point_places.size(), dots);
+    // Moves 2 and 5 (0-based 1 and 4) are eaten, move 4 (0-based 3) goes nowhere.
+    ASSERT_EQ(moves[1].vertex_end, moves[0].vertex_end);
+    ASSERT_EQ(moves[3].vertex_end, moves[2].vertex_end);
+    ASSERT_EQ(moves[4].vertex_end, moves[3].vertex_end);
+    ASSERT_EQ(dots, 3U);
+    EXPECT_LT(distance_to_segment(r.report.point_places[0], 20, 0, 20.1, 0.1), 1e-3);
+    EXPECT_LT(distance_to_segment(r.report.point_places[2], 20.1, 20, 20, 20.1), 1e-3);
+    // Not at either end of the eaten move: where the transitions meet is inside it.
+    EXPECT_GT(std::hypot(r.report.point_places[0].x_mm - 20, r.report.point_places[0].y_mm), 0.01);
+    EXPECT_GT(std::hypot(r.report.point_places[0].x_mm - 20.1, r.report.point_places[0].y_mm - 0.1), 0.01);
+    EXPECT_GT(moves[1].start_s, moves[0].start_s);
+    EXPECT_LT(moves[1].start_s, moves[2].start_s);
+    EXPECT_GT(moves[1].peak_mm_s, 0);
+    // The dot of the move that goes nowhere is its programmed point (the corner that the
+    // path rounds within P0.2).
+    EXPECT_NEAR(r.report.point_places[1].x_mm, 20.1, 1e-12);
+    EXPECT_NEAR(r.report.point_places[1].y_mm, 20, 1e-12);
 }
 
 TEST(ToolPathRecorder, SlowdownCausesOnProgramsWhoseCauseIsKnown) {

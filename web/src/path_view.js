@@ -5,116 +5,48 @@ import { OrbitControls } from "three/addons/controls/OrbitControls.js";
 import { Line2 } from "three/addons/lines/Line2.js";
 import { LineGeometry } from "three/addons/lines/LineGeometry.js";
 import { LineMaterial } from "three/addons/lines/LineMaterial.js";
-import { speedColor } from "./colors.js";
+import { pathArrays } from "./path_arrays.js";
+import { pathGeometry, pathMaterial } from "./path_material.js";
+import { takeRenderer } from "./early_gl.js";
 
-const RAPID = 0;
-const LARGE_PATH_VERTICES = 200000;
+const MANY_DOTS = 10000;
+const RAPID_COLOR = [119, 119, 119];
 
 export function createPathView(container, path, onPick) {
-  const { moveKind, vertexEnd, xyz, speed, hasY } = path;
-  const moveCount = moveKind.length;
-  const vertexCount = xyz.length / 3;
-
-  // Centre of the bounding box: float32 positions relative to it keep their precision.
-  const min = [Infinity, Infinity, Infinity];
-  const max = [-Infinity, -Infinity, -Infinity];
-  for (let i = 0; i < vertexCount; i++) {
-    for (let k = 0; k < 3; k++) {
-      const v = xyz[3 * i + k];
-      if (v < min[k]) min[k] = v;
-      if (v > max[k]) max[k] = v;
-    }
-  }
-  if (vertexCount === 0) min.fill(0), max.fill(0);
-  const centre = min.map((m, k) => (m + max[k]) / 2);
-  const size = Math.max(1e-3, ...max.map((m, k) => m - min[k]));
-
-  // Every vertex once, relative to the centre, coloured by its planned speed (a 256-entry table:
-  // the page stores the speed as a byte). Feed moves index pairs of these vertices, so a vertex
-  // shared by two segments is stored once; each pair remembers its move for picking.
-  const vertexPos = new Float32Array(vertexCount * 3);
-  for (let i = 0; i < vertexCount; i++) {
-    for (let k = 0; k < 3; k++) vertexPos[3 * i + k] = xyz[3 * i + k] - centre[k];
-  }
-  const ramp = new Uint8Array(256 * 3);
-  const rgb = [0, 0, 0];
-  for (let level = 0; level < 256; level++) {
-    speedColor(level / 255, rgb, 0);
-    for (let k = 0; k < 3; k++) ramp[3 * level + k] = Math.round(255 * rgb[k]);
-  }
-  const vertexCol = new Uint8Array(vertexCount * 3);
-  for (let i = 0; i < vertexCount; i++) vertexCol.set(ramp.subarray(3 * speed[i], 3 * speed[i] + 3), 3 * i);
-
-  let feedCount = 0;
-  let rapidCount = 0;
-  let from = 0;
-  for (let m = 0; m < moveCount; m++) {
-    const n = vertexEnd[m] - from;
-    if (moveKind[m] === RAPID) rapidCount += n;
-    else feedCount += n;
-    from = vertexEnd[m];
-  }
-  const feedIndex = new Uint32Array(feedCount * 2);
-  // The move of the feed segment that starts at a vertex (picking reports that vertex).
-  const feedMoveOfStart = new Uint32Array(vertexCount);
-  // Rapids stay unindexed: the dashes need each segment's own distances along the line.
-  const rapidPos = new Float32Array(rapidCount * 6);
-  const rapidMove = new Uint32Array(rapidCount);
-  const drawn = new Uint8Array(moveCount);
-  const pointMoves = [];
-  let f = 0;
-  let r = 0;
-  from = 0;
-  for (let m = 0; m < moveCount; m++) {
-    const to = vertexEnd[m];
-    if (to === from) pointMoves.push(m);
-    else drawn[m] = 1;
-    if (moveKind[m] === RAPID) {
-      for (let v = from; v < to; v++) {
-        rapidPos.set(vertexPos.subarray(3 * v, 3 * v + 6), 6 * r);
-        rapidMove[r++] = m;
-      }
-    } else {
-      for (let v = from; v < to; v++) {
-        feedIndex[2 * f++] = v;
-        feedIndex[2 * f - 1] = v + 1;
-        feedMoveOfStart[v] = m;
-      }
-    }
-    from = to;
-  }
+  const { vertexEnd, hasY } = path;
+  const a = pathArrays(path);
+  const { moveCount, vertexCount, centre, size, pointMove, pointOfMove } = a;
 
   const scene = new THREE.Scene();
   scene.background = new THREE.Color(0xf7f7f4);
-  const feedGeometry = new THREE.BufferGeometry();
-  feedGeometry.setAttribute("position", new THREE.BufferAttribute(vertexPos, 3));
-  feedGeometry.setAttribute("color", new THREE.BufferAttribute(vertexCol, 3, true));
-  feedGeometry.setIndex(new THREE.BufferAttribute(feedIndex, 1));
-  const feedLines = new THREE.LineSegments(feedGeometry, new THREE.LineBasicMaterial({ vertexColors: true }));
-  feedLines.userData.moveOfHit = (hit) => feedMoveOfStart[hit.index];
+  const feedGeometry = pathGeometry(a.vertexPos, a.vertexCol);
+  feedGeometry.setIndex(new THREE.BufferAttribute(a.feedIndex, 1));
+  const feedLines = new THREE.LineSegments(feedGeometry, pathMaterial());
+  feedLines.userData.moveOfHit = (hit) => a.feedMoveOfStart[hit.index];
   scene.add(feedLines);
-  const rapidGeometry = new THREE.BufferGeometry();
-  rapidGeometry.setAttribute("position", new THREE.BufferAttribute(rapidPos, 3));
   const rapidLines = new THREE.LineSegments(
-    rapidGeometry,
-    new THREE.LineDashedMaterial({ color: 0x777777, dashSize: size / 150, gapSize: size / 150 }),
+    pathGeometry(a.rapidPos, Uint8Array.from(RAPID_COLOR), a.rapidDistance),
+    pathMaterial({ dashSize: size / 150 }),
   );
-  rapidLines.computeLineDistances();
-  rapidLines.userData.moveOfHit = (hit) => rapidMove[hit.index / 2];
+  rapidLines.userData.moveOfHit = (hit) => a.rapidMove[hit.index / 2];
   scene.add(rapidLines);
-  // Moves that go nowhere (a G1 to where the tool stands) are drawn as points.
-  const pointPos = new Float32Array(pointMoves.length * 3);
-  pointMoves.forEach((m, i) => {
-    const v = vertexEnd[m];
-    for (let k = 0; k < 3; k++) pointPos[3 * i + k] = vertexCount ? xyz[3 * v + k] - centre[k] : 0;
-    drawn[m] = 1;
-  });
-  const pointGeometry = new THREE.BufferGeometry();
-  pointGeometry.setAttribute("position", new THREE.BufferAttribute(pointPos, 3));
-  const points = new THREE.Points(pointGeometry, new THREE.PointsMaterial({ color: 0x555555, size: 3, sizeAttenuation: false }));
-  const pointMove = Uint32Array.from(pointMoves);
+  // Moves with no length of their own (a G1 to where the tool stands, or a short move whose
+  // whole length went into the transitions of its two corners) are dots, drawn over the lines
+  // so they can be seen and clicked: in the planned speed's colour with a dark rim, or where
+  // there are so many that rims would hide the path (a fine raster), small and rimless.
+  const fewDots = pointMove.length <= MANY_DOTS;
+  const points = new THREE.Points(
+    pathGeometry(a.pointPos, a.pointCol),
+    pathMaterial({ pointSize: fewDots ? 8 : 3, round: fewDots, ring: fewDots, onTop: true }),
+  );
+  points.renderOrder = 1;
   points.userData.moveOfHit = (hit) => pointMove[hit.index];
   scene.add(points);
+  // The selected dot: a larger magenta one over it.
+  const pointMark = new THREE.Points(pathGeometry(new Float32Array(3), Uint8Array.from([255, 0, 255])), pathMaterial({ pointSize: 13, round: true, onTop: true }));
+  pointMark.visible = false;
+  pointMark.renderOrder = 4; // over the tool, which the selection moves onto it
+  scene.add(pointMark);
 
   // The selected move, 4 px wide over everything (WebGL draws plain lines 1 px wide).
   const highlightMaterial = new LineMaterial({ color: 0xff00ff, linewidth: 4, depthTest: false });
@@ -122,16 +54,11 @@ export function createPathView(container, path, onPick) {
   highlight.visible = false;
   highlight.renderOrder = 2;
   scene.add(highlight);
-  const tool = new THREE.Mesh(
-    new THREE.SphereGeometry(size / 120, 16, 12),
-    new THREE.MeshBasicMaterial({ color: 0x111111, depthTest: false }),
-  );
+  const tool = new THREE.Points(pathGeometry(new Float32Array(3), Uint8Array.from([17, 17, 17])), pathMaterial({ pointSize: 11, round: true, onTop: true }));
   tool.renderOrder = 3;
   scene.add(tool);
 
-  // Multisampling smooths the lines but costs every fragment several samples: on a large path
-  // (drawn on the CPU where there is no GPU) it is most of the time to the first frame.
-  const renderer = new THREE.WebGLRenderer({ antialias: vertexCount < LARGE_PATH_VERTICES, preserveDrawingBuffer: true });
+  const renderer = takeRenderer(vertexCount);
   renderer.setPixelRatio(1);
   container.appendChild(renderer.domElement);
   const camera = new THREE.PerspectiveCamera(35, 1, size / 1000, size * 100);
@@ -191,11 +118,23 @@ export function createPathView(container, path, onPick) {
     const worldPerPixel = (2 * camera.position.distanceTo(controls.target) * Math.tan((camera.fov * Math.PI) / 360)) / rect.height;
     raycaster.params.Line.threshold = 5 * worldPerPixel;
     raycaster.params.Points.threshold = 5 * worldPerPixel;
+    // A dot is a small target on top of the lines through it: within its own radius it wins.
+    const dots = raycaster.intersectObject(points, false).filter((h) => h.distanceToRay <= 4 * worldPerPixel * (h.distance / camera.position.distanceTo(controls.target)));
+    if (dots.length) {
+      dots.sort((p, q) => p.distanceToRay - q.distanceToRay);
+      return pointMove[dots[0].index];
+    }
     const hits = raycaster.intersectObjects([feedLines, rapidLines, points], false);
     if (!hits.length) return -1;
-    hits.sort((a, b) => a.distanceToRay - b.distanceToRay || a.distance - b.distance);
+    hits.sort((p, q) => p.distanceToRay - q.distanceToRay || p.distance - q.distance);
     const hit = hits[0];
     return hit.object.userData.moveOfHit(hit);
+  }
+
+  //! Compiles the selection's wide-line shader while the page waits for input, so the first
+  //! click does not wait for it (the first frame did not need it).
+  function warmUp() {
+    return renderer.compileAsync(highlight, camera, scene);
   }
 
   function moveRange(m) {
@@ -205,19 +144,23 @@ export function createPathView(container, path, onPick) {
   }
 
   function select(m) {
+    highlight.visible = false;
+    pointMark.visible = false;
     if (m < 0) {
-      highlight.visible = false;
       render();
       return;
     }
-    const [a, b] = moveRange(m);
-    // A move that goes nowhere is shown as a short stub so it can be seen at all.
-    const count = Math.max(2, b - a + 1);
-    const pos = new Float32Array(count * 3);
-    for (let i = 0; i < count; i++) {
-      const v = Math.min(a + i, b);
-      for (let k = 0; k < 3; k++) pos[3 * i + k] = (vertexCount ? xyz[3 * v + k] - centre[k] : 0) + (b === a && i === 1 && k === 0 ? size / 200 : 0);
+    const p = pointOfMove[m];
+    if (p >= 0) {
+      pointMark.geometry.attributes.position.array.set(a.pointPos.subarray(3 * p, 3 * p + 3));
+      pointMark.geometry.attributes.position.needsUpdate = true;
+      pointMark.geometry.computeBoundingSphere();
+      pointMark.visible = true;
+      render();
+      return;
     }
+    const [from, to] = moveRange(m);
+    const pos = a.vertexPos.slice(3 * from, 3 * to + 3);
     highlight.geometry.dispose();
     highlight.geometry = new LineGeometry();
     highlight.geometry.setPositions(pos);
@@ -231,19 +174,27 @@ export function createPathView(container, path, onPick) {
   }
 
   function project(v) {
-    const p = new THREE.Vector3(xyz[3 * v] - centre[0], xyz[3 * v + 1] - centre[1], xyz[3 * v + 2] - centre[2]).project(camera);
+    const p = new THREE.Vector3(a.vertexPos[3 * v], a.vertexPos[3 * v + 1], a.vertexPos[3 * v + 2]).project(camera);
     const rect = renderer.domElement.getBoundingClientRect();
     return [rect.left + ((p.x + 1) / 2) * rect.width, rect.top + ((1 - p.y) / 2) * rect.height];
   }
 
-  //! Pixels from the point (client coordinates) to the move's drawn polyline.
+  function toClient(p) {
+    p.project(camera);
+    const rect = renderer.domElement.getBoundingClientRect();
+    return { x: rect.left + ((p.x + 1) / 2) * rect.width, y: rect.top + ((1 - p.y) / 2) * rect.height };
+  }
+
+  //! Pixels from the point (client coordinates) to the move's drawn polyline or dot.
   function distanceToMove(m, x, y) {
-    const [a, b] = moveRange(m);
-    if (!vertexCount) return Infinity;
+    if (pointOfMove[m] >= 0) {
+      const q = screenPoint(m);
+      return Math.hypot(q.x - x, q.y - y);
+    }
+    const [from, to] = moveRange(m);
     let best = Infinity;
-    let p = project(a);
-    if (a === b) return Math.hypot(p[0] - x, p[1] - y);
-    for (let v = a + 1; v <= b; v++) {
+    let p = project(from);
+    for (let v = from + 1; v <= to; v++) {
       const q = project(v);
       const dx = q[0] - p[0], dy = q[1] - p[1];
       const len2 = dx * dx + dy * dy;
@@ -254,23 +205,25 @@ export function createPathView(container, path, onPick) {
     return best;
   }
 
-  //! Client coordinates of the middle of a move's drawn polyline (for tests and for scrolling).
+  //! Client coordinates of the middle of a move's drawn polyline, or of its dot (for tests and
+  //! for scrolling).
   function screenPoint(m) {
-    const [a, b] = moveRange(m);
-    const v = Math.floor((a + b) / 2);
-    const w = v === b || a === b ? null : v + 1;
-    const p = new THREE.Vector3();
-    for (let k = 0; k < 3; k++) {
-      const here = xyz[3 * v + k] - centre[k];
-      p.setComponent(k, w === null ? here : (here + xyz[3 * w + k] - centre[k]) / 2);
-    }
-    p.project(camera);
-    const rect = renderer.domElement.getBoundingClientRect();
-    return { x: rect.left + ((p.x + 1) / 2) * rect.width, y: rect.top + ((1 - p.y) / 2) * rect.height };
+    const i = pointOfMove[m];
+    if (i >= 0) return toClient(new THREE.Vector3().fromArray(a.pointPos, 3 * i));
+    const [from, to] = moveRange(m);
+    const v = Math.floor((from + to) / 2);
+    const w = Math.min(v + 1, to);
+    const p = new THREE.Vector3().fromArray(a.vertexPos, 3 * v).add(new THREE.Vector3().fromArray(a.vertexPos, 3 * w)).multiplyScalar(0.5);
+    return toClient(p);
   }
 
+  // Moves the GPU is given something of: a feed segment, a rapid segment or a dot.
+  const drawn = new Uint8Array(moveCount);
+  for (let i = 1; i < a.feedIndex.length; i += 2) drawn[a.feedMoveOfStart[a.feedIndex[i - 1]]] = 1;
+  for (const m of a.rapidMove) drawn[m] = 1;
+  for (const m of pointMove) drawn[m] = 1;
   let drawnCount = 0;
   for (let m = 0; m < moveCount; m++) drawnCount += drawn[m];
   resize();
-  return { select, placeTool, screenPoint, distanceToMove, pick, drawnSegments: drawnCount, canvas: renderer.domElement, render: renderNow };
+  return { select, placeTool, screenPoint, distanceToMove, pick, warmUp, dotMoves: pointMove, dotsRimmed: fewDots, drawnSegments: drawnCount, canvas: renderer.domElement, render: renderNow };
 }

@@ -30,6 +30,8 @@ export function buildToolPathPage(root, header, blob) {
   const slow = blob("move_slowdown");
   const xyz = blob("vertex_xyz");
   const speed = blob("vertex_speed");
+  const pointOffset = header.blobs.point_offset_xyz ? blob("point_offset_xyz") : null;
+  const pointSpeed = header.blobs.point_speed ? blob("point_speed") : null;
   const axes = tp.samples.axes;
   const samples = { t: blob("sample_t"), speed: blob("sample_speed"), pos: {}, vel: {}, acc: {}, jerk: {} };
   for (const a of axes) {
@@ -83,7 +85,7 @@ export function buildToolPathPage(root, header, blob) {
 
   let selected = -1;
   lap("figures");
-  const path = createPathView(view3d, { moveKind, vertexEnd, xyz, speed, hasY: axes.includes("Y") }, (m) => select(m, true));
+  const path = createPathView(view3d, { moveKind, vertexEnd, xyz, speed, pointOffset, pointSpeed, hasY: axes.includes("Y") }, (m) => select(m, true));
   lap("path");
   const code = createCodePane(codeBox, tp.files, sources, (file, line) => {
     const m = firstMove[file].get(line);
@@ -222,6 +224,10 @@ export function buildToolPathPage(root, header, blob) {
     },
     sampleCount: samples.t.length,
     canvas: path.canvas,
+    warmUp: () => path.warmUp(),
+    dotMoves: () => Array.from(path.dotMoves),
+    dotsRimmed: path.dotsRimmed,
+    select: (m) => select(m, true),
   };
   setTime(0, true);
   return state;

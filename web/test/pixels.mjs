@@ -39,3 +39,9 @@ export function hasColorNear(png, x, y, rgb, r = 4, tolerance = 60) {
   }
   return false;
 }
+
+//! Whether a pixel near (x, y) (within r) differs from the background (the colour at (0, 0)).
+export function inkedNear(png, x, y, r = 1, tolerance = 24) {
+  const d = png.data;
+  return !hasColorNear(png, x, y, [d[0], d[1], d[2]], 0, tolerance) || [-r, r].some((k) => !hasColorNear(png, x + k, y, [d[0], d[1], d[2]], 0, tolerance) || !hasColorNear(png, x, y + k, [d[0], d[1], d[2]], 0, tolerance));
+}

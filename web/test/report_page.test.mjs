@@ -7,7 +7,7 @@ import { execFileSync } from "node:child_process";
 import { existsSync, mkdirSync, readFileSync, writeFileSync, statSync } from "node:fs";
 import { resolve } from "node:path";
 import { launch, openPage } from "./browser.mjs";
-import { decode, differingFraction, hasColorNear, nonBackgroundFraction } from "./pixels.mjs";
+import { decode, differingFraction, hasColorNear, inkedNear, nonBackgroundFraction } from "./pixels.mjs";
 
 const args = process.argv.slice(2);
 const opt = (name) => (args.includes(name) ? args[args.indexOf(name) + 1] : undefined);
@@ -20,6 +20,7 @@ const specs = JSON.parse(readFileSync(opt("--specs"), "utf8")).filter((s) => !on
 // or geometry moves far more than this.
 const SCREENSHOT_TOLERANCE = 0.01;
 const MAGENTA = [255, 0, 255];
+const DOT = [20, 20, 20]; // the dark rim of a dot
 
 mkdirSync(dir, { recursive: true });
 let failures = 0;
@@ -106,6 +107,39 @@ async function testPage(browser, spec) {
       const png = decode(await canvas.screenshot({ type: "png" }));
       const lit = hasColorNear(png, p.x - now.x, p.y - now.y, MAGENTA, 3, 40);
       check(selected === expected && lit, `click on line ${line}: selects move ${selected + 1} (its first move: ${expected + 1}), drawn in magenta there: ${lit}`);
+    }
+
+    // Moves drawn as dots (no length of their own: a move to where the tool stands, or one the
+    // transitions of its two corners ate whole): each is visible where the page says it is, a
+    // click on it selects it (over the lines through it) and the code pane marks its line.
+    const dots = await page.evaluate(() => window.nckitReport.dotMoves());
+    const rimmed = await page.evaluate(() => window.nckitReport.dotsRimmed);
+    if (spec.dots !== undefined) check(dots.length === spec.dots, `${dots.length} move(s) drawn as dots (expected ${spec.dots})`);
+    for (const m of dots.slice(0, 8)) {
+      await page.evaluate(() => window.nckitReport.select(-1));
+      await frames(page);
+      const now = await canvas.boundingBox();
+      const p = await page.evaluate((m) => window.nckitReport.segmentScreenPoint(m), m);
+      const before = decode(await canvas.screenshot({ type: "png" }));
+      // Something is drawn there; on the page made for dots (few, so each has a dark rim;
+      // many, as in a fine raster, are small and in the path's colours) the dot's own rim.
+      const seen = rimmed && spec.dots !== undefined ? hasColorNear(before, p.x - now.x, p.y - now.y, DOT, 3, 30) : inkedNear(before, p.x - now.x, p.y - now.y, 1);
+      await page.mouse.click(p.x, p.y);
+      await frames(page);
+      const got = await page.evaluate(
+        (x, y) => {
+          const r = window.nckitReport;
+          const m = r.selectedMove;
+          return { move: m, marked: r.markedLine(), own: m >= 0 ? r.lineOfMove(m)[1] : -1, px: m >= 0 ? r.distanceToMove(m, x, y) : Infinity };
+        },
+        p.x,
+        p.y,
+      );
+      const after = decode(await canvas.screenshot({ type: "png" }));
+      const lit = hasColorNear(after, p.x - now.x, p.y - now.y, MAGENTA, 2, 40);
+      // Dots of several moves at one place (a loop to the same point) overlap: any of them.
+      check(seen && (got.move === m || got.px <= 1.5) && got.marked === got.own && lit,
+        `dot of move ${m + 1}: drawn ${seen}, a click selects move ${got.move + 1} (drawn ${got.px.toFixed(1)} px from it), the code pane marks its line ${got.marked}, drawn in magenta ${lit}`);
     }
 
     // The slider places the tool where `nckit plan --trace` has it at the slider's time.

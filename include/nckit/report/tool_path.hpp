@@ -54,6 +54,10 @@ struct ToolPathReport {
     std::vector<std::string> files;  //!< program files, as the user named them
     std::vector<ReportMove> moves;
     std::vector<ReportVertex> vertices;  //!< vertex 0 is where the path starts
+    //! Where each move with an empty polyline is drawn as a dot, in move order: a move to where
+    //! the tool stands is at its vertex; a move whose whole length went into the transitions
+    //! of its two corners is where those transitions meet (the planned path passes there).
+    std::vector<ReportVertex> point_places;
     TimeSamples samples;
     AxisPeaks peaks;
     double cycle_time_s = 0;
