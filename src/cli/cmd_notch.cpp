@@ -21,6 +21,7 @@
 #include "common.hpp"
 #include "nckit/gcode/program_source.hpp"
 #include "nckit/process/notch/notch.hpp"
+#include "nckit/process/notch/notch_json.hpp"
 #include "nckit/report/process_pages.hpp"
 #include "partial_file.hpp"
 #include "tool_path_page.hpp"
@@ -37,27 +38,6 @@ struct NotchCliOptions {
     bool json = false;
     std::string html;
 };
-
-std::string speed_json(const CutSpeed& speed) {
-    std::string out =
-        fmt::format("{{\"min_mm_min\":{},\"max_mm_min\":{},\"mean_mm_min\":{},\"covered_mm\":{},\"profile\":[",
-                    speed.min_mm_min, speed.max_mm_min, speed.mean_mm_min, speed.covered_mm);
-    for (std::size_t i = 0; i < speed.profile.size(); ++i) {
-        out += fmt::format("{}[{},{}]", i == 0 ? "" : ",", speed.profile[i][0], speed.profile[i][1]);
-    }
-    return out + "]}";
-}
-
-std::string cut_json(const NotchCut& cut) {
-    return fmt::format(
-        "{{\"line\":{},\"sequence_number\":{},\"laser_on_mcode\":{},\"length_mm\":{},\"feed_mm_min\":{},"
-        "\"cut_speed_mm_min\":{},\"run_up_mm\":{},\"run_up_placed_mm\":{},\"overrun_mm\":{},"
-        "\"approach_shortened\":{},\"profile_coordinate\":\"{}\",\"before\":{},\"after\":{}}}",
-        cut.where.line, cut.sequence_number, cut.laser_on_mcode, cut.length_mm, cut.feed_mm_min, cut.cut_speed_mm_min,
-        cut.run_up_mm, cut.run_up_placed_mm, cut.overrun_mm, cut.approach_shortened ? "true" : "false",
-        cut.profile_axis ? std::string(1, letter(*cut.profile_axis)) : std::string("s"), speed_json(cut.before),
-        speed_json(cut.after));
-}
 
 void print_cut_text(const NotchCut& cut) {
     fmt::print("line {}{}: M{} then a {:.4f} mm cut at F{}\n", cut.where.line,
@@ -85,7 +65,7 @@ public:
     }
     void cut(const NotchCut& cut) {
         if (json_) {
-            fmt::print("{}{}", printed_ == 0 ? "" : ",", cut_json(cut));
+            fmt::print("{}{}", printed_ == 0 ? "" : ",", to_json(cut).dump());
         } else {
             print_cut_text(cut);
         }

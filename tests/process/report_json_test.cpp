@@ -1,4 +1,4 @@
-// The JSON reports of `nckit crosshatch`, `nckit eccentric` and `nckit pattern` as library
+// The JSON reports of `nckit crosshatch`, `eccentric`, `pattern` and `notch` (per cut) as library
 // values: every key of the contract, in the order the commands print them, with the number of
 // the field it reports; a speed limit the axis does not have is null.
 #include <gtest/gtest.h>
@@ -9,6 +9,7 @@
 
 #include "nckit/process/crosshatch/crosshatch_json.hpp"
 #include "nckit/process/eccentric/eccentric_json.hpp"
+#include "nckit/process/notch/notch_json.hpp"
 #include "nckit/process/pattern/pattern_json.hpp"
 
 namespace nckit {
@@ -141,12 +142,41 @@ TEST(ReportJson, PatternGapToTheBoundAndZeroBound) {
     EXPECT_EQ(j["cuts"], 5);
     EXPECT_EQ(j["optimised_order"]["reversals"], 7);
     EXPECT_EQ(j["drawing_order"]["air_distance_mm"], 200);
-    EXPECT_DOUBLE_EQ(j["gap_to_bound"]["air_distance"].get<double>(), 0.1);
-    EXPECT_DOUBLE_EQ(j["gap_to_bound"]["air_time"].get<double>(), 0.1);
+    EXPECT_NEAR(j["gap_to_bound"]["air_distance"].get<double>(), 0.1, 1e-12);
+    EXPECT_NEAR(j["gap_to_bound"]["air_time"].get<double>(), 0.1, 1e-12);
     EXPECT_EQ(j["order_search"]["budget_spent"], true);
     EXPECT_EQ(keys_of(j).back(), "planned");
     r.bound_distance_mm = 0;
     EXPECT_EQ(pattern::to_json(r)["gap_to_bound"]["air_distance"], 0.0);
+}
+
+TEST(ReportJson, NotchCutWithItsProfilesAndCoordinate) {
+    NotchCut cut;
+    cut.where.line = 12;
+    cut.sequence_number = 120;
+    cut.laser_on_mcode = 24;
+    cut.length_mm = 2.5;
+    cut.feed_mm_min = 600;
+    cut.run_up_placed_mm = 0.0123;
+    cut.approach_shortened = true;
+    cut.before.min_mm_min = 410.5;
+    cut.before.profile = {{10.0, 410.5}, {12.5, 600.0}};
+    cut.after.min_mm_min = 600;
+
+    Json j = to_json(cut);
+    EXPECT_EQ(keys_of(j),
+              (std::vector<std::string>{"line", "sequence_number", "laser_on_mcode", "length_mm", "feed_mm_min",
+                                        "cut_speed_mm_min", "run_up_mm", "run_up_placed_mm", "overrun_mm",
+                                        "approach_shortened", "profile_coordinate", "before", "after"}));
+    EXPECT_EQ(j["line"], 12);
+    EXPECT_EQ(j["sequence_number"], 120);
+    EXPECT_EQ(j["approach_shortened"], true);
+    EXPECT_EQ(j["profile_coordinate"], "s");
+    EXPECT_EQ(j["before"]["profile"], Json::parse("[[10.0,410.5],[12.5,600.0]]"));
+    EXPECT_EQ(keys_of(j["after"]),
+              (std::vector<std::string>{"min_mm_min", "max_mm_min", "mean_mm_min", "covered_mm", "profile"}));
+    cut.profile_axis = Axis::Y;
+    EXPECT_EQ(to_json(cut)["profile_coordinate"], "Y");
 }
 
 }  // namespace
