@@ -179,7 +179,7 @@ TEST(UnusedWords, PWithoutG4G10OrG64) {
 TEST(UnusedWords, QWithoutG64) {
     Diagnostic d = error_of("G1 X1 Q1 F1\n");
     EXPECT_EQ(where(d), "unused-word 1:7");
-    EXPECT_EQ(d.message, "Q word with no G64 or drilling cycle to use it");
+    EXPECT_EQ(d.message, "Q word with no G64, thread or drilling cycle to use it");
 }
 
 TEST(UnusedWords, LWithoutG10) {

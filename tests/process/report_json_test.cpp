@@ -137,6 +137,7 @@ TEST(ReportJson, PatternGapToTheBoundAndZeroBound) {
 
     const Json j = pattern::to_json(r);
     EXPECT_EQ(j["size"], 42);
+    EXPECT_EQ(j["size"].dump(), "42");  // a whole size is written as one (file names use it)
     EXPECT_EQ(j["mirror"], true);
     EXPECT_EQ(j["scale"]["width"], 1.02);
     EXPECT_EQ(j["cuts"], 5);
@@ -146,6 +147,8 @@ TEST(ReportJson, PatternGapToTheBoundAndZeroBound) {
     EXPECT_NEAR(j["gap_to_bound"]["air_time"].get<double>(), 0.1, 1e-12);
     EXPECT_EQ(j["order_search"]["budget_spent"], true);
     EXPECT_EQ(keys_of(j).back(), "planned");
+    r.layout.grading.size = 40.5;
+    EXPECT_EQ(pattern::to_json(r)["size"].dump(), "40.5");
     r.bound_distance_mm = 0;
     EXPECT_EQ(pattern::to_json(r)["gap_to_bound"]["air_distance"], 0.0);
 }

@@ -1,8 +1,23 @@
 #include "nckit/process/pattern/pattern_json.hpp"
 
+#include <cmath>
+#include <cstdint>
+
 namespace nckit::pattern {
 
 using Json = nlohmann::ordered_json;
+
+namespace {
+
+//! A shoe size is a label as much as a number (file names are made of it): 40 is written 40, not
+//! 40.0; a half size stays 40.5.
+Json size_label(double size) {
+    const double whole = std::round(size);
+    if (whole == size && std::abs(whole) < 1e15) return Json(static_cast<std::int64_t>(whole));
+    return Json(size);
+}
+
+}  // namespace
 
 Json to_json(const TourCost& c) {
     return Json{{"air_distance_mm", c.air_distance_mm},
@@ -16,7 +31,7 @@ Json to_json(const SoleRun& r) {
     // Relative gap of the optimised order above the lower bound (0 when the bound is 0).
     const auto gap = [](double value, double bound) { return bound > 0 ? value / bound - 1 : 0.0; };
     return Json{
-        {"size", g.size},
+        {"size", size_label(g.size)},
         {"mirror", g.mirror},
         {"scale", {{"length", g.scale_x}, {"width", g.scale_y}}},
         {"motif_instances", r.layout.motif_instances},
