@@ -30,7 +30,7 @@ groups[test]="
   time
   # The report pages' browser test runs Debian's chromium headless (through puppeteer-core).
   chromium fonts-dejavu-core
-  # The CTest `format` checks the sources' layout with clang-format (14, as .clang-format expects).
+  # The CTest format checks the layout of the sources with clang-format (14, as .clang-format expects).
   clang-format
 "
 # Google Benchmark for bench/.
