@@ -136,4 +136,16 @@ inline MachineConfig mill_with_a() {
     return m;
 }
 
+//! The default mill reading LinuxCNC's dialect (tests of the NGC interpreter).
+inline MachineConfig linuxcnc_mill() {
+    MachineConfig machine = default_mill();
+    machine.dialect = Dialect::linuxcnc;
+    return machine;
+}
+
+//! "LINE:COL message" of a diagnostic (without its code), as LinuxCNC's errors are compared.
+inline std::string at(const Diagnostic& d) {
+    return std::to_string(d.location.line) + ":" + std::to_string(d.location.column) + " " + d.message;
+}
+
 }  // namespace nckit::test

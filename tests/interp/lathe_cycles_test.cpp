@@ -7,20 +7,10 @@
 namespace nckit::test {
 namespace {
 
-struct Point {
-    double x_radius;
-    double z;
-    bool rapid;
-};
+using Point = LathePoint;
 
-//! The Lines of a run as (radius, Z, rapid), in order; Arcs as their end with rapid = false.
 std::vector<Point> path_of(const std::vector<Move>& moves) {
-    std::vector<Point> out;
-    for (const Move& m : moves) {
-        if (const auto* l = std::get_if<Line>(&m.what)) out.push_back({l->to[Axis::X], l->to[Axis::Z], l->rapid});
-        if (const auto* a = std::get_if<Arc>(&m.what)) out.push_back({a->to[Axis::X], a->to[Axis::Z], false});
-    }
-    return out;
+    return lathe_path_of(moves);
 }
 
 void expect_path(const std::vector<Point>& got, std::size_t from, const std::vector<Point>& want) {

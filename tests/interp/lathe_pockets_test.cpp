@@ -11,18 +11,10 @@
 namespace nckit::test {
 namespace {
 
-struct Point {
-    double r;
-    double z;
-    bool rapid;
-};
+using Point = LathePoint;
 
 std::vector<Point> path_of(const std::vector<Move>& moves) {
-    std::vector<Point> out;
-    for (const Move& m : moves) {
-        if (const auto* l = std::get_if<Line>(&m.what)) out.push_back({l->to[Axis::X], l->to[Axis::Z], l->rapid});
-    }
-    return out;
+    return lathe_path_of(moves);
 }
 
 TEST(LathePockets, G71TypeIIRoughsTheLevelsAndThePocket) {
@@ -74,7 +66,7 @@ TEST(LathePockets, G71TypeIIRoughsTheLevelsAndThePocket) {
                              {25, 2, true}});
     ASSERT_EQ(path.size(), want.size());
     for (std::size_t i = 0; i < want.size(); ++i) {
-        EXPECT_NEAR(path[i].r, want[i].r, 1e-9) << "move " << i;
+        EXPECT_NEAR(path[i].x_radius, want[i].x_radius, 1e-9) << "move " << i;
         EXPECT_NEAR(path[i].z, want[i].z, 1e-9) << "move " << i;
         EXPECT_EQ(path[i].rapid, want[i].rapid) << "move " << i;
     }

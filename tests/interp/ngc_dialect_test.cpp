@@ -11,18 +11,8 @@
 namespace nckit::test {
 namespace {
 
-MachineConfig linuxcnc_mill() {
-    MachineConfig machine = default_mill();
-    machine.dialect = Dialect::linuxcnc;
-    return machine;
-}
-
 Diagnostic ngc_error(std::string_view program) {
     return error_of(program, linuxcnc_mill());
-}
-
-std::string at(const Diagnostic& d) {
-    return std::to_string(d.location.line) + ":" + std::to_string(d.location.column) + " " + d.message;
 }
 
 //! End points only (the X Y Z of each move's text), for short comparisons.

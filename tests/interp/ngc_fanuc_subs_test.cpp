@@ -12,16 +12,6 @@
 namespace nckit::test {
 namespace {
 
-MachineConfig linuxcnc_mill() {
-    MachineConfig machine = default_mill();
-    machine.dialect = Dialect::linuxcnc;
-    return machine;
-}
-
-std::string at(const Diagnostic& d) {
-    return std::to_string(d.location.line) + ":" + std::to_string(d.location.column) + " " + d.message;
-}
-
 //! "from -> to" of every straight move, X Y Z to 4 decimals.
 std::vector<std::string> lines_of(std::string_view program, const MachineConfig& machine = linuxcnc_mill(),
                                   InterpreterOptions options = {}) {

@@ -12,12 +12,6 @@
 namespace nckit::test {
 namespace {
 
-MachineConfig linuxcnc_mill() {
-    MachineConfig machine = default_mill();
-    machine.dialect = Dialect::linuxcnc;
-    return machine;
-}
-
 std::vector<Line> feeds_of(std::string_view program) {
     return only<Line>(moves_of(program, linuxcnc_mill()));
 }
