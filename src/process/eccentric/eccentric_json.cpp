@@ -1,5 +1,7 @@
 #include "nckit/process/eccentric/eccentric_json.hpp"
 
+#include "../json_number.hpp"
+
 #include <cmath>
 
 namespace nckit {
@@ -7,10 +9,6 @@ namespace nckit {
 namespace {
 
 using Json = nlohmann::ordered_json;
-
-Json finite_or_null(double value) {
-    return std::isfinite(value) ? Json(value) : Json(nullptr);
-}
 
 Json fit_json(const SectionFit& fit) {
     return Json{{"roundness_um", fit.roundness_um},
@@ -29,10 +27,10 @@ Json to_json(const EccentricReport& r) {
         {"limited_by", r.limited_by},
         {"rpm", r.job.rpm},
         {"max_rpm_by",
-         {{"velocity", finite_or_null(r.limits.velocity)},
-          {"acceleration", finite_or_null(r.limits.acceleration)},
-          {"jerk", finite_or_null(r.limits.jerk)},
-          {"following", finite_or_null(r.limits.following)}}},
+         {{"velocity", process_detail::finite_or_null(r.limits.velocity)},
+          {"acceleration", process_detail::finite_or_null(r.limits.acceleration)},
+          {"jerk", process_detail::finite_or_null(r.limits.jerk)},
+          {"following", process_detail::finite_or_null(r.limits.following)}}},
         {"compensated", fit_json(r.compensated)},
         {"uncompensated", fit_json(r.uncompensated)},
         {"servo_axis", r.servo_axis},

@@ -1,5 +1,7 @@
 #include "nckit/process/piston/piston_json.hpp"
 
+#include "../json_number.hpp"
+
 #include <cmath>
 
 namespace nckit {
@@ -7,10 +9,6 @@ namespace nckit {
 namespace {
 
 using Json = nlohmann::ordered_json;
-
-Json finite_or_null(double value) {
-    return std::isfinite(value) ? Json(value) : Json(nullptr);
-}
 
 Json run_json(const FtsRunResult& run) {
     return Json{{"pv", run.pv_um}, {"rms", run.rms_um}};
@@ -63,7 +61,7 @@ Json to_json(const PistonSimulation& s) {
             {"learning", f.learning.peak_command_mm}}},
           {"acceleration_mm_s2", s.acceleration_mm_s2},
           {"acceleration_limit_mm_s2", s.acceleration_limit_mm_s2},
-          {"max_rpm", finite_or_null(s.max_rpm)}}},
+          {"max_rpm", process_detail::finite_or_null(s.max_rpm)}}},
         {"z_mm", {{"from", p.z_start_mm}, {"to", p.z_end_mm}}},
         {"feed_mm_rev", p.feed_mm_rev},
         {"ticks", f.ticks},
