@@ -8,25 +8,16 @@ the paths are the same. Malformed Q words are refused with FILE:LINE:COL and exi
 import json
 import pathlib
 import re
-import subprocess
 import sys
 import tempfile
 
+from cli_checks import check, run_nckit, summary
+
 ROOT = pathlib.Path(__file__).resolve().parents[2]
-failures = []
-checks = 0
-
-
-def check(condition, what):
-    global checks
-    checks += 1
-    if not condition:
-        failures.append(what)
-        print(f"FAIL {what}")
 
 
 def nckit_run(nckit, *args):
-    return subprocess.run([nckit, *map(str, args)], capture_output=True, text=True, timeout=120)
+    return run_nckit(nckit, *args, text=True)
 
 
 # Two starts of M30 x 3 (lead 3, pitch 1.5) with G92, four passes each; a three-start thread with
@@ -176,8 +167,7 @@ def main() -> int:
                   and run.stdout == "", f"'{block}' refused at 4:{column} ({run.stderr.strip()})")
             run = nckit_run(nckit, "plan", "--machine", machine, bad)
             check(run.returncode == 2 and run.stdout == "", f"'{block}': plan moves nothing")
-    print(f"{checks - len(failures)} passed, {len(failures)} failed")
-    return 1 if failures else 0
+    return summary()
 
 
 if __name__ == "__main__":

@@ -2,25 +2,16 @@
 """The `nckit plan` contract: report keys, JSON precision, the trace CSV, options, exit status."""
 import json
 import pathlib
-import subprocess
 import sys
 import tempfile
 
+from cli_checks import check, run_nckit, summary
+
 ROOT = pathlib.Path(__file__).resolve().parents[2]
-failures = []
-checks = 0
-
-
-def check(condition, what):
-    global checks
-    checks += 1
-    if not condition:
-        failures.append(what)
-        print(f"FAIL {what}")
 
 
 def plan(nckit, *args):
-    return subprocess.run([nckit, "plan", *map(str, args)], capture_output=True, text=True, timeout=120)
+    return run_nckit(nckit, "plan", *args, text=True)
 
 
 def main() -> int:
@@ -84,8 +75,7 @@ def main() -> int:
         run = plan(nckit, stopped, "--machine", lathe)
         check(run.returncode == 2 and "stopped.ngc:3:1: error: G32/G33 needs the spindle turning" in run.stderr,
               "G32 with the spindle stopped is refused")
-    print(f"{checks - len(failures)} passed, {len(failures)} failed")
-    return 1 if failures else 0
+    return summary()
 
 
 if __name__ == "__main__":
