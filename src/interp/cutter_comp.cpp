@@ -12,7 +12,6 @@
 namespace nckit {
 
 using interp::comp::Segment;
-using interp::comp::Vec2;
 
 namespace {
 
@@ -120,14 +119,14 @@ std::optional<CompError> CutterCompensator::start_up(Move move, std::vector<Move
     PlaneAxes p = plane_axes(plane_);
     Vec2 from = in_plane(line.from, p);
     Vec2 to = in_plane(line.to, p);
-    double distance = interp::comp::length(to - from);
+    double distance = nckit::length(to - from);
     if (distance <= radius_mm_) {
         return error(move.where, "cutter-comp",
                      fmt::format("the start-up move is {:.4f} mm long in the plane, not longer than the tool "
                                  "radius {:.4f} mm",
                                  distance, radius_mm_));
     }
-    Vec2 normal = static_cast<double>(side_) * interp::comp::left_normal(interp::comp::unit(to - from));
+    Vec2 normal = static_cast<double>(side_) * nckit::left_normal(nckit::unit(to - from));
     set_in_plane(line.to, p, to + radius_mm_ * normal);
     if (leave_from_tool_) line.from = tool_;  // the geometry stays the programmed one, as LinuxCNC
     leave_from_tool_ = false;
@@ -162,7 +161,7 @@ std::optional<CompError> CutterCompensator::check_held(const SourceLocation& nex
     if (const auto* line = std::get_if<Line>(&held.what)) {
         Vec2 programmed{programmed_.end[0] - programmed_.start[0], programmed_.end[1] - programmed_.start[1]};
         Vec2 actual = in_plane(line->to, p) - in_plane(line->from, p);
-        if (interp::comp::dot(programmed, actual) < 0) {
+        if (nckit::dot(programmed, actual) < 0) {
             return error(held.where, "cutter-gouge",
                          fmt::format("cutter compensation would gouge: the tool radius {:.4f} mm is too large "
                                      "for this move, the compensated path runs backwards{}",

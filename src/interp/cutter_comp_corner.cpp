@@ -14,7 +14,6 @@ namespace nckit {
 
 using interp::comp::Corner;
 using interp::comp::Segment;
-using interp::comp::Vec2;
 
 namespace {
 
@@ -78,7 +77,7 @@ std::vector<Vec2> samples_of(const Move& move, PlaneAxes p) {
     const auto& arc = std::get<Arc>(move.what);
     Vec2 c = in_plane(arc.center, p);
     Vec2 a = in_plane(arc.from, p);
-    double r = interp::comp::length(a - c);
+    double r = nckit::length(a - c);
     double a0 = std::atan2(a.y - c.y, a.x - c.x);
     double sweep = std::min(arc_sweep_rad(arc), two_pi) * (arc.direction == ArcDirection::counterclockwise ? 1 : -1);
     for (int i = 0; i <= n; ++i) {
@@ -130,7 +129,7 @@ std::optional<CompError> CutterCompensator::next_planar(Move move, std::vector<M
         return error(move.where, "cutter-gouge",
                      fmt::format("the tool radius {:.4f} mm is not smaller than the radius {:.4f} mm of this arc, "
                                  "which the tool cuts from inside",
-                                 radius_mm_, interp::comp::length(b.start - b.center)));
+                                 radius_mm_, nckit::length(b.start - b.center)));
     }
     auto a_off = interp::comp::offset(a, side_, radius_mm_);  // was checked when a came in
     Corner kind = interp::comp::classify(a, b, side_);

@@ -5,37 +5,9 @@
 #include <cmath>
 #include <optional>
 
-namespace nckit::interp::comp {
+#include "nckit/core/vec2.hpp"
 
-struct Vec2 {
-    double x = 0;
-    double y = 0;
-};
-inline Vec2 operator+(Vec2 a, Vec2 b) {
-    return {a.x + b.x, a.y + b.y};
-}
-inline Vec2 operator-(Vec2 a, Vec2 b) {
-    return {a.x - b.x, a.y - b.y};
-}
-inline Vec2 operator*(double k, Vec2 a) {
-    return {k * a.x, k * a.y};
-}
-inline double dot(Vec2 a, Vec2 b) {
-    return a.x * b.x + a.y * b.y;
-}
-inline double cross(Vec2 a, Vec2 b) {
-    return a.x * b.y - a.y * b.x;
-}
-inline double length(Vec2 a) {
-    return std::hypot(a.x, a.y);
-}
-inline Vec2 left_normal(Vec2 a) {
-    return {-a.y, a.x};
-}
-inline Vec2 unit(Vec2 a) {
-    double l = length(a);
-    return l > 0 ? (1.0 / l) * a : Vec2{};
-}
+namespace nckit::interp::comp {
 
 //! A programmed or compensated element in the plane.
 struct Segment {

@@ -55,7 +55,7 @@ std::vector<double> roots_in_unit(const std::function<double(double)>& f, const 
 bool polish(const CubicPiece& m, const CubicPiece& b, double& s, double& u) {
     for (int it = 0; it < 50; ++it) {
         const Vec2 r = m.point(s) - b.point(u);
-        if (norm(r) < 1e-13) return s >= -1e-12 && s <= 1 + 1e-12 && u >= -1e-12 && u <= 1 + 1e-12;
+        if (length(r) < 1e-13) return s >= -1e-12 && s <= 1 + 1e-12 && u >= -1e-12 && u <= 1 + 1e-12;
         const Vec2 ms = m.tangent(s);
         const Vec2 bu = -1.0 * b.tangent(u);
         const double det = cross(ms, bu);
@@ -67,7 +67,7 @@ bool polish(const CubicPiece& m, const CubicPiece& b, double& s, double& u) {
         u += du;
         if (s < -0.5 || s > 1.5 || u < -0.5 || u > 1.5) return false;
     }
-    return norm(m.point(s) - b.point(u)) < 1e-9 && s >= -1e-12 && s <= 1 + 1e-12 && u >= -1e-12 && u <= 1 + 1e-12;
+    return length(m.point(s) - b.point(u)) < 1e-9 && s >= -1e-12 && s <= 1 + 1e-12 && u >= -1e-12 && u <= 1 + 1e-12;
 }
 
 }  // namespace
@@ -79,7 +79,7 @@ ClipBorder::ClipBorder(CubicPath border) : path_(std::move(border)) {
         piece_boxes_.push_back(b);
         box_.add(b.low);
         box_.add(b.high);
-        double curvature_bound = std::max(norm(piece.second(0)), norm(piece.second(1)));
+        double curvature_bound = std::max(length(piece.second(0)), length(piece.second(1)));
         polygon_error_mm_ = std::max(polygon_error_mm_, curvature_bound / (8.0 * per_piece * per_piece));
         for (int k = 0; k < per_piece; ++k) polygon_.push_back(piece.point(static_cast<double>(k) / per_piece));
     }

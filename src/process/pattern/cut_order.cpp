@@ -109,14 +109,14 @@ TourCost evaluate_tour(const std::vector<CutEnds>& cuts, const Tour& tour, const
     for (std::size_t p = 0; p < tour.order.size(); ++p) {
         const Node n = k.node(tour.order[p], tour.flipped[p] != 0);
         const Vec2 d = n.start - at;
-        out.air_distance_mm += norm(d);
+        out.air_distance_mm += length(d);
         out.air_time_s += costs.timer.rapid_s(d);
         counter.move(d);
         run(cuts[tour.order[p]], tour.flipped[p] != 0);
         at = n.end;
     }
     const Vec2 back = costs.home - at;
-    out.air_distance_mm += norm(back);
+    out.air_distance_mm += length(back);
     out.air_time_s += costs.timer.rapid_s(back);
     counter.move(back);
     out.reversals = counter.count;

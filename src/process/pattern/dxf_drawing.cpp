@@ -91,12 +91,12 @@ private:
             const Vec2 p = chain_.points[i];
             const Vec2 q = chain_.points[(i + 1) % n];
             const double b = bulges_[i];
-            if (std::abs(b) < 1e-12 || norm(q - p) < 1e-12) {
+            if (std::abs(b) < 1e-12 || length(q - p) < 1e-12) {
                 drawing.curves.emplace_back(Segment{p, q});
                 continue;
             }
             const double theta = 4.0 * std::atan(b);
-            const double chord = norm(q - p);
+            const double chord = length(q - p);
             const double radius = chord / (2.0 * std::sin(std::abs(theta) / 2.0));
             const Vec2 mid = 0.5 * (p + q);
             const Vec2 dir = (1.0 / chord) * (q - p);

@@ -30,14 +30,14 @@ PlaneCurve snap_start(const PlaneCurve& curve, Vec2 start) {
             // The point of the bisector of start–end nearest the old centre.
             const Vec2 mid = 0.5 * (start + end);
             const Vec2 chord = end - start;
-            const double len = norm(chord);
+            const double len = length(chord);
             if (len > 1e-9) {
                 const Vec2 n{-chord.y / len, chord.x / len};
                 centre = mid + dot(arc->center - mid, n) * n;
             }
         }
         const Vec2 r = start - centre;
-        return ArcCurve{centre, norm(r), std::atan2(r.y, r.x) * 180.0 / 3.14159265358979323846, arc->sweep_deg};
+        return ArcCurve{centre, length(r), std::atan2(r.y, r.x) * 180.0 / 3.14159265358979323846, arc->sweep_deg};
     }
     CubicPath path = std::get<CubicPath>(curve);
     // Shift the first piece's start; its end (the second piece's start) stays.

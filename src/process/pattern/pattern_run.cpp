@@ -68,7 +68,7 @@ Result<SoleRun> run_pattern_sole(const PatternJob& job, const OutlinePoints& poi
     run.optimised = as_cut(run.tour);
     run.bound_distance_mm =
         air_cost_lower_bound(
-            run.ends, costs.home, [](Vec2 a, Vec2 b) { return norm(b - a); }, run.optimised.air_distance_mm)
+            run.ends, costs.home, [](Vec2 a, Vec2 b) { return length(b - a); }, run.optimised.air_distance_mm)
             .value;
     run.bound_time_s =
         air_cost_lower_bound(

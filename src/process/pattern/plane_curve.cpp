@@ -125,7 +125,7 @@ PlaneCurve reversed(const PlaneCurve& curve) {
 }
 
 double curve_length(const PlaneCurve& curve) {
-    return std::visit(Overload{[](const Segment& l) { return norm(l.to - l.from); },
+    return std::visit(Overload{[](const Segment& l) { return length(l.to - l.from); },
                                [](const ArcCurve& a) { return a.radius_mm * std::abs(a.sweep_deg) * deg; },
                                [](const CubicPath& p) {
                                    // 5-point Gauss–Legendre on 4 sub-intervals of each piece.
@@ -140,7 +140,7 @@ double curve_length(const PlaneCurve& curve) {
                                        for (int k = 0; k < 4; ++k) {
                                            for (std::size_t i = 0; i < 5; ++i) {
                                                const double u = (k + 0.5 + 0.5 * x[i]) / 4.0;
-                                               total += w[i] * norm(piece.tangent(u)) / 8.0;
+                                               total += w[i] * length(piece.tangent(u)) / 8.0;
                                            }
                                        }
                                    }
@@ -163,7 +163,7 @@ std::vector<Vec2> polyline(const PlaneCurve& curve, double deviation_mm, std::si
         // Chord error of a piece split into k parts <= max|p''|·(1/k)²/8.
         const auto& path = std::get<CubicPath>(curve);
         double worst = 0;
-        for (const CubicPiece& p : path.pieces) worst = std::max({worst, norm(p.second(0)), norm(p.second(1))});
+        for (const CubicPiece& p : path.pieces) worst = std::max({worst, length(p.second(0)), length(p.second(1))});
         const double per_piece = std::ceil(std::sqrt(worst / (8.0 * std::max(deviation_mm, 1e-9))));
         steps = static_cast<std::size_t>(std::max(1.0, per_piece)) * path.pieces.size();
     }

@@ -152,11 +152,11 @@ Result<SoleOutline> fit_sole_outline(const OutlinePoints& input, double smoothin
     OutlinePoints pts;
     for (std::size_t i = 0; i < input.points.size(); ++i) {
         // A repeated point (or the first repeated at the end) would give a piece of no length.
-        if (!pts.points.empty() && norm(input.points[i] - pts.points.back()) < 1e-9) continue;
+        if (!pts.points.empty() && length(input.points[i] - pts.points.back()) < 1e-9) continue;
         pts.points.push_back(input.points[i]);
         pts.where.push_back(input.where[i]);
     }
-    while (pts.points.size() > 1 && norm(pts.points.back() - pts.points.front()) < 1e-9) {
+    while (pts.points.size() > 1 && length(pts.points.back() - pts.points.front()) < 1e-9) {
         pts.points.pop_back();
         pts.where.pop_back();
     }
@@ -168,7 +168,7 @@ Result<SoleOutline> fit_sole_outline(const OutlinePoints& input, double smoothin
     auto nearest_point = [&](Vec2 q) {
         std::size_t best = 0;
         for (std::size_t i = 1; i < pts.points.size(); ++i) {
-            if (norm(pts.points[i] - q) < norm(pts.points[best] - q)) best = i;
+            if (length(pts.points[i] - q) < length(pts.points[best] - q)) best = i;
         }
         return pts.where[best];
     };
@@ -196,7 +196,7 @@ Result<Border> inner_border(const SoleOutline& outline, double width_mm, const S
     constexpr int per_piece = 16;
     auto offset_at = [&](const CubicPiece& piece, double u) {
         const Vec2 t = piece.tangent(u);
-        const double len = norm(t);
+        const double len = length(t);
         // Counter-clockwise: the inside is on the left of the tangent.
         return piece.point(u) + (width_mm / len) * Vec2{-t.y, t.x};
     };

@@ -17,7 +17,7 @@ std::vector<double> chords(const std::vector<Vec2>& p, bool closed) {
     const std::size_t n = p.size();
     const std::size_t count = closed ? n : n - 1;
     std::vector<double> h(count);
-    for (std::size_t i = 0; i < count; ++i) h[i] = std::max(norm(p[(i + 1) % n] - p[i]), 1e-9);
+    for (std::size_t i = 0; i < count; ++i) h[i] = std::max(length(p[(i + 1) % n] - p[i]), 1e-9);
     return h;
 }
 
@@ -145,7 +145,7 @@ NearestPoint nearest_on_path(const CubicPath& path, Vec2 p) {
     for (std::size_t i = 0; i < path.pieces.size(); ++i) {
         for (int k = 0; k < samples; ++k) {
             const double u = (k + 0.5) / samples;
-            const double d = norm(path.pieces[i].point(u) - p);
+            const double d = length(path.pieces[i].point(u) - p);
             if (d < best.distance_mm) best = {d, static_cast<double>(i) + u};
         }
     }
@@ -169,7 +169,7 @@ NearestPoint nearest_on_path(const CubicPath& path, Vec2 p) {
     }
     const double wrapped = std::fmod(std::fmod(s, n) + n, n);
     const auto i = static_cast<std::size_t>(std::min(std::floor(wrapped), n - 1));
-    const double d = norm(path.pieces[i].point(wrapped - static_cast<double>(i)) - p);
+    const double d = length(path.pieces[i].point(wrapped - static_cast<double>(i)) - p);
     if (d < best.distance_mm) best = {d, wrapped};
     return best;
 }

@@ -35,7 +35,7 @@ double ellipse_distance(Vec2 p, double a, double b) {
         const double df = dot(d1, d1) + dot(e - p, d2);
         t -= f / df;
     }
-    return norm(Vec2{a * std::cos(t), b * std::sin(t)} - p);
+    return length(Vec2{a * std::cos(t), b * std::sin(t)} - p);
 }
 
 TEST(PatternSpline, ClosedInterpolationPassesThroughEveryPointAndFollowsTheCurve) {
@@ -43,10 +43,10 @@ TEST(PatternSpline, ClosedInterpolationPassesThroughEveryPointAndFollowsTheCurve
     const ClosedSpline spline = fit_closed_spline(points, 0);
     ASSERT_EQ(spline.path.pieces.size(), points.size());
     for (std::size_t i = 0; i < points.size(); ++i) {
-        EXPECT_LT(norm(spline.path.pieces[i].point(0) - points[i]), 1e-9);
+        EXPECT_LT(length(spline.path.pieces[i].point(0) - points[i]), 1e-9);
         // C1 and C2 at every join (the periodic spline wraps round).
         const CubicPiece& prev = spline.path.pieces[(i + points.size() - 1) % points.size()];
-        EXPECT_LT(norm(prev.point(1) - points[i]), 1e-9);
+        EXPECT_LT(length(prev.point(1) - points[i]), 1e-9);
     }
     // Fit error against the true ellipse between the points: 100 points on a 240 x 90 mm
     // ellipse (chords of up to 7.6 mm) stay within 10 µm.
@@ -75,9 +75,9 @@ TEST(PatternSpline, OpenSplineInterpolatesItsPoints) {
     const std::vector<Vec2> points{{0, 0}, {3, 2}, {6, -1}, {9, 0.5}};
     const CubicPath path = fit_open_spline(points);
     ASSERT_EQ(path.pieces.size(), 3u);
-    for (std::size_t i = 0; i < 3; ++i) EXPECT_LT(norm(path.pieces[i].point(0) - points[i]), 1e-12);
-    EXPECT_LT(norm(path.pieces[2].point(1) - points[3]), 1e-12);
-    EXPECT_NEAR(norm(path.pieces[0].second(0)), 0.0, 1e-9);  // natural end
+    for (std::size_t i = 0; i < 3; ++i) EXPECT_LT(length(path.pieces[i].point(0) - points[i]), 1e-12);
+    EXPECT_LT(length(path.pieces[2].point(1) - points[3]), 1e-12);
+    EXPECT_NEAR(length(path.pieces[0].second(0)), 0.0, 1e-9);  // natural end
 }
 
 TEST(PatternOutline, SelfCrossingOutlineIsRejectedAtTheNearestPoint) {

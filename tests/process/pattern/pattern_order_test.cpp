@@ -73,7 +73,7 @@ TEST(PatternOrder, NeverWorseThanDrawingOrderAndNeverBelowTheBound) {
                 .value;
         const double bound_distance =
             air_cost_lower_bound(
-                cuts, costs.home, [](Vec2 a, Vec2 b) { return norm(b - a); }, found.air_distance_mm)
+                cuts, costs.home, [](Vec2 a, Vec2 b) { return length(b - a); }, found.air_distance_mm)
                 .value;
         EXPECT_LE(bound_time, found.air_time_s * (1 + 1e-6));
         EXPECT_LE(bound_distance, found.air_distance_mm * (1 + 1e-6));
@@ -85,7 +85,7 @@ TEST(PatternOrder, NeverWorseThanDrawingOrderAndNeverBelowTheBound) {
 TEST(PatternOrder, BoundIsBelowTheExactOptimumOfSmallCases) {
     for (unsigned seed = 11; seed <= 20; ++seed) {
         const std::vector<CutEnds> cuts = random_cuts(6, seed);
-        auto air = [](Vec2 a, Vec2 b) { return norm(b - a); };
+        auto air = [](Vec2 a, Vec2 b) { return length(b - a); };
         double best = 1e300;
         std::vector<std::size_t> perm{0, 1, 2, 3, 4, 5};
         do {

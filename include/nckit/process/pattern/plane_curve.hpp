@@ -8,25 +8,9 @@
 #include <variant>
 #include <vector>
 
-namespace nckit::pattern {
+#include "nckit/core/vec2.hpp"
 
-struct Vec2 {
-    double x = 0;
-    double y = 0;
-    friend Vec2 operator+(Vec2 a, Vec2 b) { return {a.x + b.x, a.y + b.y}; }
-    friend Vec2 operator-(Vec2 a, Vec2 b) { return {a.x - b.x, a.y - b.y}; }
-    friend Vec2 operator*(double s, Vec2 a) { return {s * a.x, s * a.y}; }
-    friend bool operator==(Vec2, Vec2) = default;
-};
-inline double dot(Vec2 a, Vec2 b) {
-    return a.x * b.x + a.y * b.y;
-}
-inline double cross(Vec2 a, Vec2 b) {
-    return a.x * b.y - a.y * b.x;
-}
-inline double norm(Vec2 a) {
-    return std::hypot(a.x, a.y);
-}
+namespace nckit::pattern {
 
 //! p(u) = c[0] + c[1]·u + c[2]·u² + c[3]·u³ for u in [0, 1].
 struct CubicPiece {
