@@ -41,12 +41,13 @@ export function pathArrays({ moveKind, vertexEnd, xyz, speed, pointOffset, point
     speedColor(level / 255, rgb, 0);
     for (let k = 0; k < 3; k++) ramp[3 * level + k] = Math.round(255 * rgb[k]);
   }
-  const vertexCol = new Uint8Array(vertexCount * 3);
+  // RGBA: see pathGeometry.
+  const vertexCol = new Uint8Array(vertexCount * 4).fill(255);
   for (let i = 0; i < vertexCount; i++) {
     const at = 3 * speed[i];
-    vertexCol[3 * i] = ramp[at];
-    vertexCol[3 * i + 1] = ramp[at + 1];
-    vertexCol[3 * i + 2] = ramp[at + 2];
+    vertexCol[4 * i] = ramp[at];
+    vertexCol[4 * i + 1] = ramp[at + 1];
+    vertexCol[4 * i + 2] = ramp[at + 2];
   }
 
   let feedCount = 0;
@@ -69,7 +70,7 @@ export function pathArrays({ moveKind, vertexEnd, xyz, speed, pointOffset, point
   const rapidMove = new Uint32Array(rapidCount);
   const pointMove = new Uint32Array(pointCount);
   const pointPos = new Float32Array(pointCount * 3);
-  const pointCol = new Uint8Array(pointCount * 3);
+  const pointCol = new Uint8Array(pointCount * 4).fill(255);
   // Per move: its index among the point moves, or -1.
   const pointOfMove = new Int32Array(moveCount).fill(-1);
   let f = 0;
@@ -86,7 +87,7 @@ export function pathArrays({ moveKind, vertexEnd, xyz, speed, pointOffset, point
         pointPos[3 * p + k] = vertex + (placed ? pointOffset[3 * p + k] : 0) - centre[k];
       }
       const level = placed ? pointSpeed[p] : vertexCount ? speed[to] : 0;
-      pointCol.set(ramp.subarray(3 * level, 3 * level + 3), 3 * p);
+      pointCol.set(ramp.subarray(3 * level, 3 * level + 3), 4 * p);
       pointOfMove[m] = p;
       pointMove[p++] = m;
     } else if (moveKind[m] === RAPID) {

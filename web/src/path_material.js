@@ -53,18 +53,22 @@ export function pathMaterial({ dashSize = 0, pointSize = 1, round = false, ring 
   });
 }
 
-//! Geometry for pathMaterial: positions, 8-bit colours (one per vertex or one for all) and the
-//! distance along the line (zeros unless dashed).
+//! Geometry for pathMaterial: positions, 8-bit colours (RGBA per vertex, or one RGB for all)
+//! and the distance along the line (absent unless dashed: read as 0). Four bytes a colour, not
+//! three: WebGL over Vulkan (ANGLE, SwiftShader) has no 3-byte vertex format and would convert
+//! every colour on the CPU when the buffer is given to the GPU.
 export function pathGeometry(positions, colors, lineDistances) {
   const count = positions.length / 3;
   const geometry = new THREE.BufferGeometry();
   geometry.setAttribute("position", new THREE.BufferAttribute(positions, 3));
-  let rgb = colors;
-  if (colors.length === 3 && count !== 1) {
-    rgb = new Uint8Array(count * 3);
-    for (let i = 0; i < count; i++) rgb.set(colors, 3 * i);
+  let rgba = colors;
+  if (colors.length === 3) {
+    rgba = new Uint8Array(count * 4).fill(255);
+    for (let i = 0; i < count; i++) rgba.set(colors, 4 * i);
   }
-  geometry.setAttribute("color", new THREE.BufferAttribute(rgb, 3, true));
-  geometry.setAttribute("lineDistance", new THREE.BufferAttribute(lineDistances || new Float32Array(count), 1));
+  geometry.setAttribute("color", new THREE.BufferAttribute(rgba, 4, true));
+  // Without distances the attribute is left out: the shader then reads 0, and the GPU is not
+  // given megabytes of zeros.
+  if (lineDistances) geometry.setAttribute("lineDistance", new THREE.BufferAttribute(lineDistances, 1));
   return geometry;
 }

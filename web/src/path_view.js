@@ -34,10 +34,12 @@ export function createPathView(container, path, onPick) {
   // whole length went into the transitions of its two corners) are dots, drawn over the lines
   // so they can be seen and clicked: in the planned speed's colour with a dark rim, or where
   // there are so many that rims would hide the path (a fine raster), small and rimless.
+  // Many dots are one pixel each: WebGL on the CPU (SwiftShader) spends on a 3-pixel dot about
+  // three times what it spends on a 1-pixel one, and 600,000 of them were most of a frame.
   const fewDots = pointMove.length <= MANY_DOTS;
   const points = new THREE.Points(
     pathGeometry(a.pointPos, a.pointCol),
-    pathMaterial({ pointSize: fewDots ? 8 : 3, round: fewDots, ring: fewDots, onTop: true }),
+    pathMaterial({ pointSize: fewDots ? 8 : 1, round: fewDots, ring: fewDots, onTop: true }),
   );
   points.renderOrder = 1;
   points.userData.moveOfHit = (hit) => pointMove[hit.index];
@@ -57,6 +59,10 @@ export function createPathView(container, path, onPick) {
   const tool = new THREE.Points(pathGeometry(new Float32Array(3), Uint8Array.from([17, 17, 17])), pathMaterial({ pointSize: 11, round: true, onTop: true }));
   tool.renderOrder = 3;
   scene.add(tool);
+  // Every vertex lies within half the size of the centre along each axis (a dot a little off
+  // its vertex: within the whole size). Given, the spheres that culling and picking test first
+  // need no pass over a million vertices.
+  for (const object of [feedLines, rapidLines, points]) object.geometry.boundingSphere = new THREE.Sphere(new THREE.Vector3(), size);
 
   const renderer = takeRenderer(vertexCount);
   renderer.setPixelRatio(1);
@@ -86,9 +92,14 @@ export function createPathView(container, path, onPick) {
   function renderNow() {
     renderer.render(scene, camera);
   }
+  let shownSize = "";
   function resize() {
     const w = container.clientWidth || 600;
     const h = container.clientHeight || 400;
+    // The observer's first call repeats the size set below: drawing again would double the
+    // first frame's cost.
+    if (shownSize === w + "x" + h) return;
+    shownSize = w + "x" + h;
     renderer.setSize(w, h, false);
     renderer.domElement.style.width = w + "px";
     renderer.domElement.style.height = h + "px";
@@ -129,6 +140,12 @@ export function createPathView(container, path, onPick) {
     hits.sort((p, q) => p.distanceToRay - q.distanceToRay || p.distance - q.distance);
     const hit = hits[0];
     return hit.object.userData.moveOfHit(hit);
+  }
+
+  //! Returns once the GPU has run every command given so far (reading a pixel waits for them).
+  function finishFrame() {
+    const gl = renderer.getContext();
+    gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array(4));
   }
 
   //! Compiles the selection's wide-line shader while the page waits for input, so the first
@@ -225,5 +242,5 @@ export function createPathView(container, path, onPick) {
   let drawnCount = 0;
   for (let m = 0; m < moveCount; m++) drawnCount += drawn[m];
   resize();
-  return { select, placeTool, screenPoint, distanceToMove, pick, warmUp, dotMoves: pointMove, dotsRimmed: fewDots, drawnSegments: drawnCount, canvas: renderer.domElement, render: renderNow };
+  return { select, placeTool, screenPoint, distanceToMove, pick, warmUp, finishFrame, dotMoves: pointMove, dotsRimmed: fewDots, drawnSegments: drawnCount, canvas: renderer.domElement, render: renderNow };
 }
