@@ -23,8 +23,10 @@ export function buildToolPathPage(root, header, blob) {
   const moveLine = blob("move_line");
   const moveFile = blob("move_file");
   const vertexEnd = blob("move_vertex_end");
-  const start = blob("move_start_s");
-  const end = blob("move_end_s");
+  // Each move's start and end time are needed only once a move is selected: unpacked then
+  // (two million numbers on a large program, a good part of the unpacking).
+  const start = (m) => blob("move_start_s")[m];
+  const end = (m) => blob("move_end_s")[m];
   const feed = blob("move_feed_mm_s");
   const peak = blob("move_peak_mm_s");
   const slow = blob("move_slowdown");
@@ -103,8 +105,8 @@ export function buildToolPathPage(root, header, blob) {
       info.innerHTML =
         `move ${m + 1}: ${KINDS[moveKind[m]]}, line ${moveLine[m]} · ` +
         (moveKind[m] === 0 ? "" : `F ${(feed[m] * 60).toFixed(1)} mm/min, `) +
-        `planned peak ${(peak[m] * 60).toFixed(1)} mm/min · t ${start[m].toFixed(4)}–${end[m].toFixed(4)} s${reason}`;
-      if (fromPath) setTime(indexAt(start[m]), true);
+        `planned peak ${(peak[m] * 60).toFixed(1)} mm/min · t ${start(m).toFixed(4)}–${end(m).toFixed(4)} s${reason}`;
+      if (fromPath) setTime(indexAt(start(m)), true);
     } else if (lineOnly) {
       code.mark(lineOnly[0], lineOnly[1]);
       info.textContent = `line ${lineOnly[1]}: no move`;
@@ -140,7 +142,7 @@ export function buildToolPathPage(root, header, blob) {
       let lo = 0, hi = moveCount - 1;
       while (lo < hi) {
         const mid = (lo + hi + 1) >> 1;
-        if (start[mid] <= samples.t[i]) lo = mid;
+        if (start(mid) <= samples.t[i]) lo = mid;
         else hi = mid - 1;
       }
       if (moveCount) select(lo, false);
