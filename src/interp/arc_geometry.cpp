@@ -48,6 +48,7 @@ double arc_sweep_rad(const Arc& arc) {
 }
 
 AxisBox arc_bounds(const Arc& arc) {
+    constexpr double angle_eps_rad = 1e-9;
     AxisBox box;
     for (std::size_t i = 0; i < axis_count; ++i) {
         box.low[i] = std::min(arc.from[i], arc.to[i]);
@@ -65,6 +66,10 @@ AxisBox arc_bounds(const Arc& arc) {
         travel = std::fmod(travel, two_pi);
         if (travel < 0) travel += two_pi;
         if (travel > sweep) continue;
+        // An extreme the arc starts or ends on is already in the box as that end point; taken at
+        // the larger radius it would stick out past it when the two radii differ (CAM output
+        // rounded to 3-4 decimals), and a G71 shape would seem to turn back there.
+        if (travel < angle_eps_rad || travel > sweep - angle_eps_rad) continue;
         double first = arc.center[p.first] + radius * std::cos(extreme);
         double second = arc.center[p.second] + radius * std::sin(extreme);
         box.low[p.first] = std::min(box.low[p.first], first);

@@ -162,6 +162,7 @@ bool is_code_number(double value) {
 std::optional<Diagnostic> collect_words(const Block& block, BlockWords& out, GCodeSystem system) {
     out = BlockWords{};
     out.lathe_increments = system == GCodeSystem::a;
+    bool polar_cancel_seen = false;
     for (const Word& word : block.words) {
         auto at = [&] { return block.at_column(word.column); };
         bool code_letter = word.letter == 'M' || word.letter == 'N' || word.letter == 'O' || word.letter == 'T';
@@ -182,6 +183,15 @@ std::optional<Diagnostic> collect_words(const Block& block, BlockWords& out, GCo
             LatheCode read = read_lathe_code(system, code);
             if (!read.refusal.empty()) return error_at(at(), "unsupported-gcode", read.refusal);
             code = read.code;
+            if (code == g(15)) {
+                // Shop programs' safe-start lines write G15 (polar coordinates off) beside G40
+                // G49 G80: with G16 unsupported polar mode is never on, so G15 changes nothing.
+                if (polar_cancel_seen) {
+                    return error_at(at(), "modal-conflict", "G15 and G15 are in the same modal group");
+                }
+                polar_cancel_seen = true;
+                continue;
+            }
             auto group = group_of(code);
             if (!group) {
                 return error_at(at(), "unsupported-gcode", fmt::format("{} is not supported", g_name(code, system)));

@@ -15,6 +15,7 @@
 #include <fmt/format.h>
 
 #include "executor.hpp"
+#include "nckit/interp/arc_geometry.hpp"
 #include "lathe_codes.hpp"
 #include "lathe_contour.hpp"
 
@@ -115,12 +116,15 @@ std::optional<Diagnostic> Executor::rough_cycle(std::vector<Move>& out) {
         const Extent l = extent_along(element, axes.length);
         const double step_l = to[axes.length] - from[axes.length];
         if (along == 0 && std::abs(step_l) > flat_mm) along = sign_of(step_l);
+        // An arc whose end point is rounded (CAM output to 4 decimals) ends a little off its start
+        // radius; its bulge may pass the end point by that much without the shape turning back.
+        const auto* arc = std::get_if<Arc>(&element.what);
+        const double bulge = flat_mm + (arc ? std::abs(arc_end_radius(*arc) - arc_start_radius(*arc)) : 0.0);
         const bool d_ok = pockets || (up * (to[axes.depth] - from[axes.depth]) >= -flat_mm &&
-                                      d.low >= std::min(from[axes.depth], to[axes.depth]) - flat_mm &&
-                                      d.high <= std::max(from[axes.depth], to[axes.depth]) + flat_mm);
-        const bool l_ok = along * step_l >= -flat_mm &&
-                          l.low >= std::min(from[axes.length], to[axes.length]) - flat_mm &&
-                          l.high <= std::max(from[axes.length], to[axes.length]) + flat_mm;
+                                      d.low >= std::min(from[axes.depth], to[axes.depth]) - bulge &&
+                                      d.high <= std::max(from[axes.depth], to[axes.depth]) + bulge);
+        const bool l_ok = along * step_l >= -flat_mm && l.low >= std::min(from[axes.length], to[axes.length]) - bulge &&
+                          l.high <= std::max(from[axes.length], to[axes.length]) + bulge;
         if (!d_ok || !l_ok) {
             const std::string one_way = pockets ? std::string(1, letter(axes.length))
                                                 : fmt::format("{} and in {}", letter(axes.depth), letter(axes.length));

@@ -229,5 +229,18 @@ TEST(ArcPlane, MillStartsInTheXYPlane) {
     EXPECT_EQ(std::get<Arc>(moves[0].what).plane, Plane::xy);
 }
 
+TEST(ArcBounds, AnEndOnAQuarterTurnStaysTheEndWhenTheRadiiDiffer) {
+    // CAM output rounded to 4 decimals: from (10, 0) about (0, 0) to (0, 10.002), start radius
+    // 10, end radius 10.002. The start sits on the +X extreme: the box ends there, not at the
+    // larger radius 10.002 beyond it; the +Y extreme is the end point itself.
+    Arc arc = the<Arc>("G0 X10 Y0\nG3 X0 Y10.002 I-10 J0 F100\n");
+    AxisBox box = arc_bounds(arc);
+    EXPECT_DOUBLE_EQ(box.high[Axis::X], 10.0);
+    EXPECT_DOUBLE_EQ(box.high[Axis::Y], 10.002);
+    // A quarter-turn extreme inside the sweep still counts, at the larger radius.
+    Arc half = the<Arc>("G0 X10 Y0\nG3 X-10.002 Y0 I-10 J0 F100\n");
+    EXPECT_NEAR(arc_bounds(half).high[Axis::Y], 10.002, 1e-12);
+}
+
 }  // namespace
 }  // namespace nckit::test

@@ -204,6 +204,13 @@ TEST(LatheCycles, FanucsErrors) {
                               "G71 P10 Q20 U0.4 W0.1 F0.2\nN10 G0 X30.\nG1 Z-10.\nG3 X30. Z-20. R6.\nN20 G1 X60.\n",
                           lathe),
               "bad-cycle 6:1");
+    // Corner rounds posted with I or K only and rounded to 4 decimals in inch (end radius 0.00005
+    // in off the start radius, so the second bulges 0.00005 in past its end point in Z) run one
+    // way: accepted, as the control cuts them.
+    EXPECT_FALSE(moves_of("G20\nG0 X.988 Z.1\nG71 U.035 R.01\nG71 P10 Q20 U.02 W.005 F.01\nN10 G0 X.1755\n"
+                          "G1 Z0.\nG3 X.394 Z-.1092 K-.1092\nG1 Z-.1893\nG2 X.4875 Z-.236 I.0467\nN20 G1 X.988\nM30\n",
+                          lathe)
+                     .empty());
     // Wrong-sign allowance: U-0.4 on an outside shape would leave it inside the part.
     EXPECT_EQ(error_where(std::string(head) + "G71 P10 Q20 U-0.4 W0.1 F0.2\nN10 G0 X30.\nN20 G1 Z-10.\n", lathe),
               "bad-cycle 3:13");

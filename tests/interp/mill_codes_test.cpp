@@ -92,5 +92,16 @@ TEST(ProgramStop3006, StopsAsM0) {
               (Texts{"G0 X1.0000 Y0.0000 Z0.0000", "M0", "G0 X2.0000 Y0.0000 Z0.0000"}));
 }
 
+TEST(PolarCancel, G15InASafeStartLineChangesNothing) {
+    // `G0 G17 G21 G40 G49 G54 G80 G90 G94` then `G15 G52 X0 Y0`, as a Fanuc shop program's safe
+    // start writes it: the same moves as without G15.
+    EXPECT_EQ(texts("G15 G52 X0 Y0\nG0 X10 Y5\nG15\nG1 X20 F100\n"), texts("G52 X0 Y0\nG0 X10 Y5\nG1 X20 F100\n"));
+}
+
+TEST(PolarCancel, G16AndATwiceWrittenG15AreErrors) {
+    EXPECT_EQ(error_where("G16 X10 Y30\n"), "unsupported-gcode 1:1");
+    EXPECT_EQ(error_where("G15 G15\n"), "modal-conflict 1:5");
+}
+
 }  // namespace
 }  // namespace nckit::test

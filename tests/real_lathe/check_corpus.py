@@ -1,11 +1,14 @@
 #!/usr/bin/env python3
-"""Runs every real lathe program beside this file through `nckit moves --json` on
-corpus_lathe.toml (the example lathe, Fanuc G-code system A, with longer travel) and reports how many nckit accepts. For each accepted program the
+"""Runs every real lathe program beside this file through `nckit moves --json` on the machine
+programs.csv names for it (corpus_lathe.toml: the example lathe, Fanuc G-code system A, with
+longer travel; corpus_lathe_b.toml: the same in system B) and reports how many nckit accepts,
+in all and per source repository. For each accepted program the
 moves are checked: every cutting move has a positive feed, and every roughing feed of a G71
 ends on or outside the finished shape that its G70 cuts (the cycle never cuts into the
 finishing allowance). Exit status 1 when fewer than --min-accepted programs pass or a check
 fails. `--list` prints each program's status (the table in BENCHMARKS.md)."""
 import argparse
+import csv
 import json
 import pathlib
 import re
@@ -72,18 +75,28 @@ def check_program(path: pathlib.Path, moves: list) -> list:
     return problems
 
 
+def read_list() -> dict:
+    """programs.csv: file -> (machine file, source repository); every *.nc must be listed."""
+    with open(HERE / "programs.csv", newline="", encoding="utf-8") as f:
+        return {row["file"]: (row["machine"], row["repository"]) for row in csv.DictReader(f)}
+
+
 def main() -> int:
     parser = argparse.ArgumentParser()
     parser.add_argument("nckit")
     parser.add_argument("--min-accepted", type=int, default=0)
     parser.add_argument("--list", action="store_true")
     args = parser.parse_args()
-    machine = HERE / "corpus_lathe.toml"
+    listed = read_list()
     programs = sorted(HERE.glob("*.nc"))
     accepted = 0
-    failures = []
+    failures = [f"{p.name}: not in programs.csv" for p in programs if p.name not in listed]
+    per_source = {}
     for program in programs:
-        run = subprocess.run([args.nckit, "moves", str(program), "--machine", str(machine), "--json"],
+        machine, source = listed.get(program.name, ("corpus_lathe.toml", "?"))
+        tally = per_source.setdefault(source, [0, 0])
+        tally[1] += 1
+        run = subprocess.run([args.nckit, "moves", str(program), "--machine", str(HERE / machine), "--json"],
                              capture_output=True, text=True, timeout=120)
         if run.returncode != 0:
             first = run.stderr.strip().splitlines()[0] if run.stderr.strip() else f"exit {run.returncode}"
@@ -91,11 +104,14 @@ def main() -> int:
                 print(f"| {program.name} | refused | {first.replace(str(HERE) + '/', '')} |")
             continue
         accepted += 1
+        tally[0] += 1
         moves = [json.loads(line) for line in run.stdout.splitlines() if line.strip()]
         problems = check_program(program, moves)
         failures += [f"{program.name}: {p}" for p in problems]
         if args.list:
             print(f"| {program.name} | accepted | {len(moves)} moves{'; ' + problems[0] if problems else ''} |")
+    for source, (n_ok, n_all) in per_source.items():
+        print(f"{source}: accepted {n_ok} of {n_all}")
     print(f"accepted {accepted} of {len(programs)} ({100.0 * accepted / max(1, len(programs)):.0f} %)")
     for f in failures:
         print(f"FAIL {f}")

@@ -88,8 +88,16 @@ def read_list(path: Path) -> list[Entry]:
     return entries
 
 
+def library_options() -> list[str]:
+    """Programs called by M98/G65 from another file (shop/library/O1002.nc ...), as a control
+    holds them in its memory beside the main program."""
+    library = HERE / "shop" / "library"
+    return ["--library", str(library)] if library.is_dir() else []
+
+
 def nckit_check(nckit: str, entry: Entry) -> tuple[bool, str]:
-    proc = subprocess.run([nckit, "check", str(entry.path), "--machine", str(entry.machine)],
+    proc = subprocess.run([nckit, "check", str(entry.path), "--machine", str(entry.machine),
+                           *library_options()],
                           capture_output=True, text=True, timeout=TIMEOUT_S,
                           stdin=subprocess.DEVNULL)
     first = next((l for l in proc.stderr.splitlines() if ": error:" in l), "")
@@ -116,7 +124,8 @@ def run_one(entry: Entry, args, workdir: Path) -> Outcome:
     # `N2 G0 G17 G40 G49 G80 G90`): it moves nothing, and nckit writes none.
     args.skip_zero_length = True
     args.timeout = TIMEOUT_S
-    ok, message = cl.compare_program(entry.path, ref, entry.path, src, args, workdir, True)
+    ok, message = cl.compare_program(entry.path, ref, entry.path, src, args, workdir, True,
+                                     library_options())
     return Outcome("accept", "accept", "equal" if ok else "differs",
                    "" if ok else message.split(": ", 1)[-1].splitlines()[0][:200])
 
