@@ -85,7 +85,7 @@ TEST(NotchChunks, ErrorsComeInCutOrderAcrossChunks) {
     text += "M30\n";
     const std::vector<Move> moves = interpret(ProgramSource::from_string(text, "p.nc"), machine);
     const std::string whole = outcome(moves, machine, 1000);
-    EXPECT_NE(whole.find("notch-crossing"), std::string::npos) << whole;
+    EXPECT_NE(whole.find("crosses the path of line"), std::string::npos) << whole;
     for (std::size_t chunk : {1U, 2U, 4U, 7U}) {
         EXPECT_EQ(outcome(moves, machine, chunk), whole) << "chunks of " << chunk;
     }
