@@ -31,7 +31,7 @@ build-nckit: configure
 	@cmake --build --preset release -j $(JOBS) --target nckit
 
 install: build-nckit
-	@cmake --install $(BUILD) --prefix $(PREFIX) >/dev/null
+	@cmake --install $(BUILD) --prefix $(PREFIX) --component nckit >/dev/null
 	@echo "nckit installed as $(PREFIX)/bin/nckit"
 
 run: build-nckit

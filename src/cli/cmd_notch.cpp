@@ -37,6 +37,7 @@ struct NotchCliOptions {
     MachineOptions machine;
     bool json = false;
     std::string html;
+    std::size_t cuts_per_pass = NotchOptions{}.cuts_per_chunk;
 };
 
 void print_cut_text(const NotchCut& cut) {
@@ -221,7 +222,9 @@ int run_notch(const NotchCliOptions& options) {
             printer.cut(cut);
         }
     };
-    NotchRunStatus status = run_notch_job(machine, options.program, streams);
+    NotchOptions job_options;
+    job_options.cuts_per_chunk = options.cuts_per_pass;
+    NotchRunStatus status = run_notch_job(machine, options.program, streams, job_options);
     if (!status.ok()) {
         std::fflush(stdout);
         print_diagnostics(status.diagnostics);
@@ -253,6 +256,10 @@ void add_notch_verb(CLI::App& app, int& exit_status) {
     verb->add_flag("--json", options->json, "print the report (with the speed profiles) as one JSON object");
     verb->add_option("--html", options->html,
                      "write an interactive page: speed over each cut before and after, the rewritten tool path");
+    verb->add_option("--cuts-per-pass", options->cuts_per_pass,
+                     "cuts checked per run of the program, 1-1000000 (default 4096): memory holds about two "
+                     "passes' cuts, and each further pass runs the program once more")
+        ->check(CLI::Range(1, 1000000));
     verb->callback([options, &exit_status] { exit_status = run_notch(*options); });
 }
 

@@ -205,6 +205,12 @@ TEST(CrosshatchJob, ErrorsPointAtTheKey) {
     EXPECT_NE(first("[crosshatch]\nbore_diameter_mm = -92.0\n")
                   .find("job.toml:2:20: error: 'bore_diameter_mm' must be positive"),
               std::string::npos);
+    // A bore given in metres (0.092 for 92 mm) is refused where it stands.
+    std::string tiny = job_text(12, 15, 30);
+    tiny.replace(tiny.find("92.0"), 4, "0.092");
+    EXPECT_NE(first(tiny).find("job.toml:2:20: error: 'bore_diameter_mm' = 0.092 is below any bore-hardening cell"),
+              std::string::npos)
+        << first(tiny);
     EXPECT_NE(first(job_text(12, 15, 30, "colour = 3")).find("job.toml:12:1: error: unknown key 'colour'"),
               std::string::npos);
     EXPECT_NE(first(job_text(12, 15, 361)).find("job.toml:11:13: error: 'index_deg' must be 0 to 360"),

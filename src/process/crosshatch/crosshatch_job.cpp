@@ -27,6 +27,9 @@ void check_at_most(TableReader& reader, ConfigSink& sink, std::string_view key, 
     }
 }
 
+// A bore narrower than any laser head fits into: most likely metres for mm (0.092 for 92).
+constexpr double smallest_bore_mm = 10;
+
 void read_crosshatch(const toml::table& table, CrosshatchJob& job, ConfigSink& sink) {
     TableReader reader(table, "[crosshatch]", sink);
     reader.number_into("bore_diameter_mm", Need::required, Sign::positive, job.bore_diameter_mm);
@@ -78,6 +81,12 @@ void read_crosshatch(const toml::table& table, CrosshatchJob& job, ConfigSink& s
     reader.reject_unknown_keys();
 
     check_at_most(reader, sink, "bore_diameter_mm", job.bore_diameter_mm, 2000, "mm");
+    if (job.bore_diameter_mm > 0 && job.bore_diameter_mm < smallest_bore_mm) {
+        sink.error(reader.region_of("bore_diameter_mm"), "config-value",
+                   fmt::format("'bore_diameter_mm' = {} is below any bore-hardening cell (at least {} mm): is it "
+                               "in metres?",
+                               job.bore_diameter_mm, smallest_bore_mm));
+    }
     check_at_most(reader, sink, "bore_length_mm", job.bore_length_mm, 5000, "mm");
     check_at_most(reader, sink, "lead_screw_pitch_mm", job.lead_screw_pitch_mm, 100, "mm");
     check_at_most(reader, sink, "heads", job.heads, 360, "helix starts");

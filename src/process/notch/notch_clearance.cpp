@@ -33,9 +33,10 @@ Span span_of(const CutRecord& cut, bool run_up) {
 
 }  // namespace
 
-ClearanceCheck::ClearanceCheck(CutRecords& cuts, const NotchOptions& options) : cuts_(cuts), options_(options) {
+ClearanceCheck::ClearanceCheck(CutRecords& cuts, std::size_t count, const NotchOptions& options)
+    : cuts_(cuts), options_(options) {
     std::vector<SweepIndex::Segment> segments;
-    for (std::size_t c = 0; c < cuts_.size(); ++c) {
+    for (std::size_t c = 0; c < count; ++c) {
         if (cuts_[c].local_error) continue;  // refused already: its crossings are not looked for
         for (bool run_up : {true, false}) {
             const Span span = span_of(cuts_[c], run_up);
@@ -95,9 +96,10 @@ void ClearanceCheck::check(std::uint64_t k, const Move& move, const Piece& piece
     }
 }
 
-Diagnostics cut_errors(const CutRecords& cuts) {
+Diagnostics cut_errors(const CutRecords& cuts, std::size_t count) {
     Diagnostics errors;
-    for (const CutRecord& cut : cuts) {
+    for (std::size_t c = 0; c < count; ++c) {
+        const CutRecord& cut = cuts[c];
         if (cut.local_error) {
             errors.push_back(*cut.local_error);
             continue;

@@ -7,11 +7,17 @@
 
 namespace nckit::notch_detail {
 
-NotchEmitter::NotchEmitter(const CutRecords& cuts, const MachineConfig& machine, std::function<void(const Move&)> out)
-    : cuts_(cuts), sync_off_(sync_off_mcode(machine)), out_(std::move(out)) {}
+NotchEmitter::NotchEmitter(const CutRecords& cuts, const MachineConfig& machine, std::function<void(const Move&)> out,
+                           std::uint64_t from_move, std::optional<std::uint64_t> until_move)
+    : cuts_(cuts),
+      sync_off_(sync_off_mcode(machine)),
+      out_(std::move(out)),
+      from_move_(from_move),
+      until_move_(until_move) {}
 
 void NotchEmitter::add(const Move& move) {
     const std::uint64_t k = index_++;
+    if (k < from_move_ || (until_move_ && k >= *until_move_)) return;
     const CutRecord* cut = next_cut_ < cuts_.size() ? &cuts_[next_cut_] : nullptr;
     if (cut == nullptr || k < cut->laser_on) {
         // A plain move; the approach of a cut whose run-up lies on it ends at the run-up point.

@@ -158,25 +158,35 @@ std::optional<int> sync_off_mcode(const MachineConfig& machine) {
     return std::nullopt;
 }
 
-CutFinder::CutFinder(const MachineConfig& machine, const NotchOptions& /*options*/)
-    : machine_(machine), sync_off_(sync_off_mcode(machine)) {}
+CutFinder::CutFinder(const MachineConfig& machine, const NotchOptions& /*options*/,
+                     std::function<void(CutRecord&&)> out)
+    : machine_(machine), sync_off_(sync_off_mcode(machine)), out_(std::move(out)) {}
 
 void CutFinder::add(const Move& move) {
     const std::uint64_t k = index_++;
     const bool motion = is_motion(move);
-    if (!cuts_.empty()) {
-        CutRecord& last = cuts_.back();
-        if (k == last.line + 1) {
+    if (open_) {
+        if (k == open_->line + 1) {
             const Io* off = mcode_of(move);
-            if (off != nullptr && machine_.is_laser_off_mcode(off->number)) last.programmed_off = k;
+            if (off != nullptr && machine_.is_laser_off_mcode(off->number)) open_->programmed_off = k;
         }
-        if (motion && !last.next && k > last.line) last.next = k;
+        if (motion && k > open_->line) {
+            // Its laser-off code (the move right after the cut) has been seen too: complete.
+            open_->next = k;
+            out_(std::move(*open_));
+            open_.reset();
+        }
     }
     if (laser_on_) start_cut(laser_on_->first, laser_on_->second, move);
     laser_on_.reset();
     if (const Io* io = mcode_of(move); io != nullptr && machine_.is_laser_on_mcode(io->number))
         laser_on_ = {{k, io->number}};
     if (motion) last_motion_ = {{k, move}};
+}
+
+void CutFinder::finish() {
+    if (open_) out_(std::move(*open_));
+    open_.reset();
 }
 
 void CutFinder::start_cut(std::uint64_t laser_on, int laser_on_mcode, const Move& move) {
@@ -194,7 +204,7 @@ void CutFinder::start_cut(std::uint64_t laser_on, int laser_on_mcode, const Move
             std::make_unique<Diagnostic>(error_at(move.where, "notch-no-sync-off",
                                                   "the machine has no laser-off M-code that switches without a stop: "
                                                   "list one in 'laser_off_mcodes' and not in 'exact_stop_mcodes'"));
-        cuts_.push_back(std::move(cut));
+        open_ = std::move(cut);
         return;
     }
     cut.info = describe(move, *line, laser_on_mcode, machine_);
@@ -210,7 +220,7 @@ void CutFinder::start_cut(std::uint64_t laser_on, int laser_on_mcode, const Move
     if (!cut.local_error) {
         cut.local_error = travel_error(machine_, move, cut.overrun_point, "overrun", cut.overrun_placed_mm);
     }
-    cuts_.push_back(std::move(cut));
+    open_ = std::move(cut);
 }
 
 }  // namespace nckit::notch_detail

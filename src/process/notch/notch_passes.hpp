@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -49,30 +50,34 @@ struct CutRecord {
 //! The machine's first laser-off M-code that switches without a stop (the rewrite's M128).
 [[nodiscard]] std::optional<int> sync_off_mcode(const MachineConfig& machine);
 
-//! Pass 1: finds the cuts as the moves go by (a laser-on M-code, then a straight feed move) and
-//! places each run-up and overrun. Holds the last motion and the cuts found, nothing else.
+//! Finds the cuts as a run of the program's moves goes by (a laser-on M-code, then a straight
+//! feed move) and places each run-up and overrun. Holds the last motion and the cut not yet
+//! complete (its next motion not yet seen), nothing else: each complete record goes to `out`,
+//! in program order. Pass 1 counts them; later passes keep the chunk they need.
 class CutFinder {
 public:
-    CutFinder(const MachineConfig& machine, const NotchOptions& options);
+    CutFinder(const MachineConfig& machine, const NotchOptions& options, std::function<void(CutRecord&&)> out);
     void add(const Move& move);
-    [[nodiscard]] CutRecords take() { return std::move(cuts_); }
+    //! The program has ended: the last cut is complete.
+    void finish();
 
 private:
     void start_cut(std::uint64_t laser_on, int laser_on_mcode, const Move& move);
 
     const MachineConfig& machine_;
     std::optional<int> sync_off_;
+    std::function<void(CutRecord&&)> out_;
     std::uint64_t index_ = 0;
     std::optional<std::pair<std::uint64_t, Move>> last_motion_;
     std::optional<std::pair<std::uint64_t, int>> laser_on_;  // the previous move, when a laser-on code
-    CutRecords cuts_;
+    std::optional<CutRecord> open_;                          // the last cut, before its next motion
 };
 
-//! Pass 2a: every run-up and overrun against every other move's path, the moves streamed once;
-//! fills each record's first crossing.
+//! Pass 2a: the run-ups and overruns of cuts [0, count) of `cuts` against every other move's
+//! path, the moves streamed once; fills each record's first crossing.
 class ClearanceCheck {
 public:
-    ClearanceCheck(CutRecords& cuts, const NotchOptions& options);
+    ClearanceCheck(CutRecords& cuts, std::size_t count, const NotchOptions& options);
     void add(const Move& move);
 
 private:
@@ -89,14 +94,18 @@ private:
     std::uint64_t index_k_ = 0;
 };
 
-//! The errors of the checked cuts, in cut order (per cut: its local error, else the run-up's
-//! crossing, else the overrun's).
-[[nodiscard]] Diagnostics cut_errors(const CutRecords& cuts);
+//! The errors of the checked cuts [0, count), in cut order (per cut: its local error, else the
+//! run-up's crossing, else the overrun's).
+[[nodiscard]] Diagnostics cut_errors(const CutRecords& cuts, std::size_t count);
 
-//! Pass 2b: the rewritten moves, as the original moves go by (the cuts are known from pass 1).
+//! Pass 2b: the rewritten moves, as the original moves go by. `cuts` are the cuts of moves
+//! [from_move, until_move) in order, and the first cut after them (its approach, and the return
+//! of the cut before, may come before its laser-on code); moves outside that range are not
+//! written (another chunk's pass writes them).
 class NotchEmitter {
 public:
-    NotchEmitter(const CutRecords& cuts, const MachineConfig& machine, std::function<void(const Move&)> out);
+    NotchEmitter(const CutRecords& cuts, const MachineConfig& machine, std::function<void(const Move&)> out,
+                 std::uint64_t from_move = 0, std::optional<std::uint64_t> until_move = std::nullopt);
     void add(const Move& move);
 
 private:
@@ -105,35 +114,52 @@ private:
     const CutRecords& cuts_;
     std::optional<int> sync_off_;
     std::function<void(const Move&)> out_;
+    std::uint64_t from_move_;
+    std::optional<std::uint64_t> until_move_;
     std::size_t next_cut_ = 0;
     std::uint64_t index_ = 0;
 };
 
-//! Pass 3: the speed along every cut, the trajectory's pieces streamed once, each cut measured
-//! from its first piece on the cut line to the first motion piece off it. A cut's measurement
-//! is done once that piece has come (or the trajectory has ended).
+//! Pass 3's cuts: the records from cut `base` on (at most two chunks), with an index of their
+//! lines. The job slides it on by a chunk once the first chunk's cuts are handed out, so a cut
+//! is looked for on the trajectory from at least a chunk of cuts before its own.
+struct CutWindow {
+    CutRecords records;
+    std::size_t base = 0;  //!< the cut number of records.front()
+    SweepIndex lines;      //!< records[i]'s cut line is segment i
+    //! A piece on a cut lies within on_line_mm of its line, off by at most on_line_mm·|rate| on
+    //! one axis: a query's pad covers the largest rate of any cut in the window.
+    double margin_mm = 0;
+    //! After records changed: the index and margin over them.
+    void reindex();
+    [[nodiscard]] const CutRecord& at(std::size_t cut) const { return records[cut - base]; }
+};
+
+//! Pass 3: the speed along every cut of the window, the trajectory's pieces streamed once,
+//! each cut measured from its first piece on the cut line to the first motion piece off it. A
+//! cut's measurement is done once that piece has come (or the trajectory has ended); the cuts
+//! are taken in order.
 class CutMeter {
 public:
-    CutMeter(const CutRecords& cuts, const NotchOptions& options);
+    CutMeter(const CutWindow& window, const NotchOptions& options);
     ~CutMeter();
     CutMeter(const CutMeter&) = delete;
     CutMeter& operator=(const CutMeter&) = delete;
     void add(const TrajectoryPiece& piece);
     void finish();
-    [[nodiscard]] bool done(std::size_t cut) const { return state_[cut] == State::done; }
-    //! The finished measurement of `cut` (once).
+    [[nodiscard]] bool done(std::size_t cut) const { return ended_ || finished_.count(cut) != 0; }
+    //! The finished measurement of `cut` (once, in cut order).
     [[nodiscard]] CutSpeed take(std::size_t cut);
 
 private:
-    enum class State : std::uint8_t { waiting, active, done };
     struct Active;
-    const CutRecords& cuts_;
+    const CutWindow& window_;
     const NotchOptions& options_;
-    SweepIndex index_;
-    double margin_mm_ = 0;
-    std::vector<State> state_;
+    std::size_t next_take_ = 0;                // cuts before it are handed out: never measured again
+    std::unordered_set<std::size_t> started_;  // active or finished, not yet taken
     std::vector<Active> active_;
     std::unordered_map<std::size_t, CutSpeed> finished_;
+    bool ended_ = false;
 };
 
 }  // namespace nckit::notch_detail

@@ -145,28 +145,21 @@ struct CutMeter::Active {
     SpeedStats stats;
 };
 
-namespace {
-
-std::vector<SweepIndex::Segment> cut_lines(const CutRecords& cuts) {
-    std::vector<SweepIndex::Segment> lines;
-    lines.reserve(cuts.size());
-    for (const CutRecord& cut : cuts) lines.push_back({cut.info.start, cut.info.end});
-    return lines;
-}
-
-}  // namespace
-
-CutMeter::CutMeter(const CutRecords& cuts, const NotchOptions& options)
-    : cuts_(cuts), options_(options), index_(cut_lines(cuts)), state_(cuts.size(), State::waiting) {
-    // A piece on a cut lies within on_line_mm of its line, off by at most on_line_mm·|rate| on
-    // one axis: the query's margin covers the largest rate of any cut.
-    for (const CutRecord& cut : cuts) {
+void CutWindow::reindex() {
+    std::vector<SweepIndex::Segment> segments;
+    segments.reserve(records.size());
+    margin_mm = 0;
+    for (const CutRecord& cut : records) {
+        segments.push_back({cut.info.start, cut.info.end});
         for (std::size_t a = 0; a < axis_count; ++a) {
-            margin_mm_ = std::max(
-                margin_mm_, on_line_mm * (2.0 + std::abs(cut.info.end[a] - cut.info.start[a]) / cut.info.length_mm));
+            margin_mm = std::max(
+                margin_mm, on_line_mm * (2.0 + std::abs(cut.info.end[a] - cut.info.start[a]) / cut.info.length_mm));
         }
     }
+    lines = SweepIndex(segments);
 }
+
+CutMeter::CutMeter(const CutWindow& window, const NotchOptions& options) : window_(window), options_(options) {}
 
 CutMeter::~CutMeter() = default;
 
@@ -175,42 +168,39 @@ void CutMeter::add(const TrajectoryPiece& piece) {
     // Measurements under way: this piece goes on, or ends, each of them.
     for (std::size_t i = 0; i < active_.size();) {
         Active& active = active_[i];
-        const NotchCut& cut = cuts_[active.cut].info;
+        const NotchCut& cut = window_.at(active.cut).info;
         if (on_cut(piece, cut)) {
             sample_piece(piece, cut, options_, active.stats);
             ++i;
             continue;
         }
-        state_[active.cut] = State::done;
         finished_.emplace(active.cut, active.stats.finish());
         active_.erase(active_.begin() + static_cast<std::ptrdiff_t>(i));
     }
     if (piece.segment.shape != SegmentShape::line) return;
     const AxisVector end = piece.segment.origin + scaled(piece.segment.rate, piece.segment.length);
-    index_.query(piece.segment.origin, end, margin_mm_, [&](std::size_t c) {
-        if (state_[c] != State::waiting || cuts_[c].local_error || !on_cut(piece, cuts_[c].info)) return;
-        state_[c] = State::active;
-        active_.push_back({c, SpeedStats(cuts_[c].info, options_.profile_points)});
-        sample_piece(piece, cuts_[c].info, options_, active_.back().stats);
+    window_.lines.query(piece.segment.origin, end, window_.margin_mm, [&](std::size_t i) {
+        const std::size_t c = window_.base + i;
+        const CutRecord& record = window_.records[i];
+        if (c < next_take_ || started_.count(c) != 0 || record.local_error || !on_cut(piece, record.info)) return;
+        started_.insert(c);
+        active_.push_back({c, SpeedStats(record.info, options_.profile_points)});
+        sample_piece(piece, record.info, options_, active_.back().stats);
     });
 }
 
 void CutMeter::finish() {
-    for (Active& active : active_) {
-        state_[active.cut] = State::done;
-        finished_.emplace(active.cut, active.stats.finish());
-    }
+    for (Active& active : active_) finished_.emplace(active.cut, active.stats.finish());
     active_.clear();
-    for (std::size_t c = 0; c < state_.size(); ++c) {
-        if (state_[c] != State::waiting) continue;
-        // Never on the trajectory: what measure_cut_speed gives for a cut it does not find.
-        state_[c] = State::done;
-        finished_.emplace(c, SpeedStats(cuts_[c].info, options_.profile_points).finish());
-    }
+    ended_ = true;
 }
 
 CutSpeed CutMeter::take(std::size_t cut) {
+    next_take_ = cut + 1;
+    started_.erase(cut);
     auto it = finished_.find(cut);
+    // Never on the trajectory: what measure_cut_speed gives for a cut it does not find.
+    if (it == finished_.end()) return SpeedStats(window_.at(cut).info, options_.profile_points).finish();
     CutSpeed out = std::move(it->second);
     finished_.erase(it);
     return out;

@@ -60,6 +60,10 @@ struct NotchOptions {
     std::size_t profile_points = 201;
     //! s between speed samples on the trajectory (piece ends are always sampled).
     double sample_period_s = 0.0002;
+    //! Cuts whose run-ups and overruns are checked in one run of the program (run_notch_job):
+    //! memory holds about two chunks of cuts, and a program with more cuts is run once more per
+    //! chunk (docs/processes/notching.md, "Long programs").
+    std::size_t cuts_per_chunk = 4096;
 };
 
 //! The rewrite of a move list: the cuts found, and the new moves.
@@ -93,8 +97,9 @@ struct NotchJob {
 using MoveReader = std::function<InterpResult()>;
 
 //! What the streamed job reads and where it writes. The original program is run once per pass
-//! (three passes), so memory stays bounded whatever the program's length: what is kept is a
-//! small record per cut, never the moves, the trajectories or the speed samples.
+//! (see run_notch_job), so memory stays bounded whatever the program's length and number of
+//! cuts: what is kept is the records of at most two chunks of cuts, never the moves, the
+//! trajectories or the speed samples.
 struct NotchStreams {
     //! A new run of the original program from its start; nothing when it cannot be opened (the
     //! opener has said why).
@@ -118,9 +123,11 @@ struct NotchRunStatus {
 };
 
 //! The job in passes over the original program: (1) find the cuts and place their run-ups and
-//! overruns, check that the planner takes the program; (2) check each run-up and overrun against
-//! every other move's path and write the rewritten program; (3) plan the original and the
-//! rewritten program side by side and measure each cut on both, handing the cuts out in order.
+//! overruns, check that the planner takes the program; (2) per chunk of cuts
+//! (NotchOptions::cuts_per_chunk), one run: check its run-ups and overruns against every other
+//! move's path and write its part of the rewritten program; (3) plan the original and the
+//! rewritten program side by side and measure each cut on both, handing the cuts out in order
+//! (with one more run of the original that finds the cuts again when they fill several chunks).
 //! Errors of passes 1 and 2 come before anything is handed out, in the order notch_program
 //! gives them.
 [[nodiscard]] NotchRunStatus run_notch_job(const MachineConfig& machine, const std::string& source_name,
