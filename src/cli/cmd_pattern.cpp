@@ -1,7 +1,8 @@
 // nckit pattern JOB.toml: shoe-sole pattern milling. Fits the sole outline, tiles and clips the
 // motif, orders the grooves (drawing order, optimised order, lower bound), writes the program
 // (-o), the drawing (--svg) and reports per size, as text or --json. With a [series] and no
-// --size every size is made and -o / --svg name folders (one file per size). A bad job writes
+// --size every size is made: -o names a folder (one program per size), and the drawings and pages
+// go to --svg-dir / --html-dir, since --svg and --html name one file on every verb. A bad job writes
 // nothing.
 #include <algorithm>
 #include <filesystem>
@@ -32,7 +33,9 @@ struct PatternOptions {
     bool mirror = false;
     std::string output;
     std::string svg;
+    std::string svg_dir;
     std::string html;
+    std::string html_dir;
     bool json = false;
 };
 
@@ -120,6 +123,13 @@ int run_pattern(const PatternOptions& o) {
     } else {
         sizes.emplace_back(std::nullopt);
     }
+    if (series && (!o.svg.empty() || !o.html.empty())) {
+        fmt::print(stderr,
+                   "{}: error: the job makes every size of its series and {} names one file: give --size N, or {} "
+                   "DIR for one file per size\n",
+                   o.job, o.svg.empty() ? "--html" : "--svg", o.svg.empty() ? "--html-dir" : "--svg-dir");
+        return exit_bad_input;
+    }
     const std::string stem = std::filesystem::path(o.job).stem().string();
     std::vector<Sole> soles;
     for (const std::optional<double>& size : sizes) {
@@ -147,8 +157,11 @@ int run_pattern(const PatternOptions& o) {
         if (!series) return target;
         return (std::filesystem::path(target) / (sole.name + ext)).string();
     };
-    for (const std::string* folder : {&o.output, &o.svg, &o.html}) {
-        if (series && !folder->empty()) {
+    auto place_in = [](const std::string& folder, const Sole& sole, const char* ext) {
+        return folder.empty() ? std::string() : (std::filesystem::path(folder) / (sole.name + ext)).string();
+    };
+    for (const std::string* folder : {&o.output, &o.svg_dir, &o.html_dir}) {
+        if ((series || folder != &o.output) && !folder->empty()) {
             std::error_code ec;
             std::filesystem::create_directories(*folder, ec);
             if (ec) {
@@ -159,19 +172,22 @@ int run_pattern(const PatternOptions& o) {
     }
     for (Sole& sole : soles) {
         sole.program_path = place(o.output, sole, ".nc");
-        sole.svg_path = place(o.svg, sole, ".svg");
+        sole.svg_path = o.svg.empty() ? place_in(o.svg_dir, sole, ".svg") : o.svg;
         if (!sole.program_path.empty() && !write_file(sole.program_path, sole.run.program)) return exit_bad_input;
-        if (!sole.svg_path.empty() && !write_file(sole.svg_path, pattern_svg(sole.run, *job, sole.name))) {
+        const std::string svg_text = pattern_svg(sole.run, *job, sole.name);
+        if (!sole.svg_path.empty() && !write_file(sole.svg_path, svg_text)) return exit_bad_input;
+        if (!o.svg.empty() && !o.svg_dir.empty() && !write_file(place_in(o.svg_dir, sole, ".svg"), svg_text)) {
             return exit_bad_input;
         }
     }
     for (const Sole& sole : soles) {
-        const std::string page_path = place(o.html, sole, ".html");
-        if (page_path.empty()) continue;
-        // The program's tool path shows the layout, the cutting order and the air moves.
-        ReportPage page = pattern_page(sole.run, sole.title);
-        page.tool_path = plan_tool_path_text(sole.run.program, sole.name + ".nc", *machine);
-        if (!page.tool_path || !write_page(page, page_path)) return exit_bad_input;
+        for (const std::string& page_path : {o.html, place_in(o.html_dir, sole, ".html")}) {
+            if (page_path.empty()) continue;
+            // The program's tool path shows the layout, the cutting order and the air moves.
+            ReportPage page = pattern_page(sole.run, sole.title);
+            page.tool_path = plan_tool_path_text(sole.run.program, sole.name + ".nc", *machine);
+            if (!page.tool_path || !write_page(page, page_path)) return exit_bad_input;
+        }
     }
     if (o.json) {
         print_json(soles, o);
@@ -193,11 +209,14 @@ void add_pattern_verb(CLI::App& app, int& exit_status) {
     verb->add_option("--size", options->size, "make this size of the series only");
     verb->add_flag("--mirror", options->mirror, "the other foot (mirrored across the sole's length)");
     verb->add_option("-o,--output", options->output, "write the program (a folder when every size is made)");
-    verb->add_option("--svg", options->svg, "draw outline, border, grooves and air moves (a folder for every size)");
+    verb->add_option("--svg", options->svg, "draw outline, border, grooves and air moves into this file (one size)");
+    verb->add_option("--svg-dir", options->svg_dir, "one drawing per size made, JOB_SIZE.svg, into this folder");
     verb->add_flag("--json", options->json, "print the report as JSON");
     verb->add_option(
         "--html", options->html,
-        "write an interactive page: the order's figures and the program's tool path (a folder for every size)");
+        "write an interactive page into this file (one size): the order's figures and the program's tool path");
+    verb->add_option("--html-dir", options->html_dir,
+                     "one interactive page per size made, JOB_SIZE.html, into this folder");
     verb->callback([options, &exit_status] { exit_status = run_pattern(*options); });
 }
 

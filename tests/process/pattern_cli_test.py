@@ -101,11 +101,21 @@ with tempfile.TemporaryDirectory() as tmp:
     assert text.startswith("<svg") and "stroke-dasharray" in text and "<circle" in text
     assert text.count("stroke-linecap") == sole["cuts"]
 
-    # Every size into folders, one program each.
-    report = pattern(job, "-o", os.path.join(tmp, "nc"), "--svg", os.path.join(tmp, "svg"))
+    # Every size into folders, one program and one drawing each.
+    report = pattern(job, "-o", os.path.join(tmp, "nc"), "--svg-dir", os.path.join(tmp, "svg"))
     sizes = {s["size"]: s for s in report["sizes"]}
     assert sorted(sizes) == [38, 39, 40, 41, 42, 44]
     assert sorted(os.listdir(os.path.join(tmp, "nc"))) == sorted(f"sole_pattern_{s}.nc" for s in sizes)
+    assert sorted(os.listdir(os.path.join(tmp, "svg"))) == sorted(f"sole_pattern_{s}.svg" for s in sizes)
+    assert all(s["svg"] == os.path.join(tmp, "svg", f"sole_pattern_{k}.svg") for k, s in sizes.items())
+
+    # --svg and --html name one file on every verb: with every size of a series they are refused,
+    # and nothing is written.
+    for option in ("--svg", "--html"):
+        target = os.path.join(tmp, "every_size" + option.replace("--", "."))
+        r = run("pattern", job, "--machine", machine, option, target)
+        assert r.returncode == 2 and f"{option} names one file" in r.stderr and f"{option}-dir" in r.stderr, r.stderr
+        assert not os.path.exists(target)
     assert sizes[44]["scale"] == {"length": 1.1, "width": 1.1}
     assert abs(sizes[41]["scale"]["length"] - (260 + 6.667) / 260) < 2e-3
     assert sizes[38]["cuts"] < sizes[40]["cuts"] < sizes[44]["cuts"]
