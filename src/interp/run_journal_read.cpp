@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "nckit/pipeline/run_journal.hpp"
+#include "nckit/interp/run_journal.hpp"
 
 namespace nckit {
 
