@@ -98,9 +98,10 @@ void io_blocks(std::string& out, const RestartIo& io, const MachineConfig& machi
         fmt::format_to(std::back_inserter(out), "T{}\n", io.tool_selected);
     if (io.speed_set) {
         // A Fanuc lathe clamps with the coordinate-setting code and S (G50 in system A, G92 in
-        // B and C) before G96; elsewhere G96 D carries the clamp, as LinuxCNC reads it.
+        // B and C), a mode of its own that stays under G97 too; elsewhere G96 D carries the
+        // clamp, as LinuxCNC reads it.
         const bool lathe = machine.gcode_system != GCodeSystem::none;
-        if (io.constant_surface_speed && io.rpm_clamp > 0 && lathe) {
+        if (io.rpm_clamp > 0 && lathe) {
             out += machine.gcode_system == GCodeSystem::a ? "G50 S" : "G92 S";
             append_exact(out, io.rpm_clamp);
             out += '\n';

@@ -14,7 +14,7 @@ plug-in in LinuxCNC's own standalone interpreter (`rs274 -p PLUGIN -i INI -g PRO
    block k + 1, arrive at the journal's position and retained values (restart checks both), and
    its moves after the approach must equal the original run's from that block on (1e-9 mm, the
    comparison of restart_every_block.py). The whole journal must be refused as
-   `restart-run-complete`.
+   `restart-run-complete` ("nothing is left to restart").
 
 Exit status: 0 when every check holds, 1 otherwise.
 """
@@ -128,7 +128,7 @@ def check_program(args, name: str, work: Path) -> str:
                 raise Failure(f"cut after block {k}, record {report['first_record'] + i}: {diff}")
     proc = run([args.nckit, "restart", str(program), "--journal", str(journal), "--machine", str(REPO / MACHINE),
                 "--vars", str(live)], work)
-    if proc.returncode != 2 or "restart-run-complete" not in proc.stderr:
+    if proc.returncode != 2 or "nothing is left to restart" not in proc.stderr:
         raise Failure(f"the finished run's journal is not refused as complete: {proc.stderr.strip()}")
     return f"{len(blocks)} blocks journaled, restarts after blocks {cuts} checked"
 
