@@ -55,6 +55,34 @@ std::string vector_json(const AxisVector& v, const MachineConfig& machine) {
     return out + "}";
 }
 
+//! The mirror, scaling and rotation in force: {"mirror":{"X":at},"scale":null or {"center":{..},
+//! "factors":{..}},"rotation":null or {"plane":"G17","center":[u,v],"deg":R}}, work mm / deg.
+std::string transform_json(const TransformView& t, const MachineConfig& machine) {
+    std::string mirror = "{";
+    for (const AxisConfig& axis : machine.axes) {
+        if (!t.mirrored[index(axis.axis)]) continue;
+        if (mirror.size() > 1) mirror += ',';
+        fmt::format_to(std::back_inserter(mirror), "\"{}\":{}", letter(axis.axis), json_number(t.mirror_at[axis.axis]));
+    }
+    mirror += '}';
+    std::string scale = "null";
+    if (t.scale_on) {
+        AxisVector factors;
+        for (std::size_t i = 0; i < axis_count; ++i) factors.value[i] = t.scale[i];
+        scale = fmt::format("{{\"center\":{},\"factors\":{}}}", vector_json(t.scale_center, machine),
+                            vector_json(factors, machine));
+    }
+    std::string rotation = "null";
+    if (t.rotate_on) {
+        rotation = fmt::format("{{\"plane\":\"{}\",\"center\":[{},{}],\"deg\":{}}}",
+                               t.rotate_plane == Plane::xy   ? "G17"
+                               : t.rotate_plane == Plane::zx ? "G18"
+                                                             : "G19",
+                               json_number(t.rotate_first), json_number(t.rotate_second), json_number(t.rotate_deg));
+    }
+    return fmt::format("{{\"mirror\":{},\"scale\":{},\"rotation\":{}}}", mirror, scale, rotation);
+}
+
 std::string report_json(const RestartReport& r, const MachineConfig& machine, const JournalContents* journal) {
     const ModalView& s = r.state;
     std::string out;
@@ -83,6 +111,8 @@ std::string report_json(const RestartReport& r, const MachineConfig& machine, co
     fmt::format_to(o, ",\"feed_mode\":\"{}\",\"feed\":{},\"path\":\"{}\",\"tolerance_mm\":{},\"transforms\":{}}}",
                    s.feed_mode == FeedMode::per_revolution ? "G95" : "G94", json_number(s.feed),
                    s.path.exact_stop ? "G61" : "G64", json_number(s.path.tolerance_mm), s.transform_active);
+    out.pop_back();  // the state's closing brace: its transforms follow
+    fmt::format_to(o, ",\"transform\":{}}}", transform_json(s.transform, machine));
     const RestartApproach& a = r.approach;
     std::string sides = "{";
     for (const AxisConfig& axis : machine.axes) {

@@ -42,7 +42,7 @@ ProgramPlanCallbacks journal_callbacks(std::optional<RunJournal>& journal, const
     }
     callbacks.on_piece = [&journal, on_piece = std::move(on_piece)](const TrajectoryPiece& piece) {
         on_piece(piece);
-        journal->on_piece(piece);
+        journal->on_reached(piece.where);
     };
     callbacks.on_move = [&journal, &interpreter](const Move& move) { journal->on_move(interpreter, move); };
     return callbacks;

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "nckit/pipeline/plan_program.hpp"
-#include "nckit/pipeline/run_journal.hpp"
+#include "nckit/interp/run_journal.hpp"
 
 namespace nckit::cli {
 

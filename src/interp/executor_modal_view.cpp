@@ -7,6 +7,7 @@ ModalView Executor::modal_view() const {
     view.length_factor_mm = modal_.length_factor_mm;
     view.work_system = modal_.work_system;
     view.work_offset = offsets_.work[modal_.work_system];
+    view.work_offsets = offsets_.work;
     view.g92_offset = offsets_.g92;
     view.g52_offset = offsets_.g52;
     view.plane = modal_.plane;
@@ -27,6 +28,7 @@ ModalView Executor::modal_view() const {
     view.tool_offset = modal_.tool_offset;
     view.cutter_compensation = comp_.engaged();
     view.transform_active = transform_.active();
+    view.transform = transform_.view();
     return view;
 }
 

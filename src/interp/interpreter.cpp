@@ -94,11 +94,11 @@ void Interpreter::set_position(const AxisVector& machine) {
 }
 
 std::uint64_t Interpreter::retained_writes() const {
-    return state_->runner ? state_->runner->retained_writes() : 0;
+    return state_->runner ? state_->runner->retained_writes() : state_->ngc->persistent_changes();
 }
 
 std::vector<RetainedVariable> Interpreter::retained_values() const {
-    return state_->runner ? state_->runner->retained_values() : std::vector<RetainedVariable>{};
+    return state_->runner ? state_->runner->retained_values() : state_->ngc->persistent_values();
 }
 
 InterpResult Interpreter::next() {

@@ -93,13 +93,21 @@ double GcodeWriter::length_factor(Axis axis) const {
     return config != nullptr && config->kind == AxisKind::rotary ? 1.0 : frame_.length_factor_mm;
 }
 
+AxisVector GcodeWriter::to_program(const AxisVector& machine) const {
+    const AxisVector work = machine - frame_.origin_mm;
+    return frame_.transform.active() ? frame_.transform.unmap(work) : work;
+}
+
 void GcodeWriter::append_axes(std::string& out, const AxisVector& position) {
+    const AxisVector now = to_program(position);
+    const AxisVector before = to_program(last_);
     for (std::size_t i = 0; i < axis_count; ++i) {
         auto axis = static_cast<Axis>(i);
         if (machine_.find(axis) == nullptr) continue;
-        const double factor = length_factor(axis);
-        double value = (position[axis] - frame_.origin_mm[axis]) / factor;
-        if (frame_.incremental) value -= (last_[axis] - frame_.origin_mm[axis]) / factor;
+        const double diameter = frame_.diameter && axis == Axis::X ? 2.0 : 1.0;
+        const double factor = length_factor(axis) / diameter;
+        double value = now[axis] / factor;
+        if (frame_.incremental) value -= before[axis] / factor;
         number(out, letter(axis), value, factor);
     }
     last_ = position;
@@ -152,11 +160,14 @@ void GcodeWriter::append(std::string& out, const Move& move) {
                     out += ' ';
                     plane_ = m.plane;
                 }
-                out += m.direction == ArcDirection::clockwise ? "G2" : "G3";
+                // Under a mirror the reader turns the arc round again.
+                const bool clockwise = (m.direction == ArcDirection::clockwise) != frame_.transform.reverses(m.plane);
+                out += clockwise ? "G2" : "G3";
                 append_axes(out, m.to);
                 PlaneAxes p = plane_axes(m.plane);
+                const AxisVector center = to_program(m.center), from = to_program(m.from);
                 for (Axis axis : {p.first, p.second}) {
-                    number(out, offset_letter(axis), (m.center[axis] - m.from[axis]) / length_factor(axis),
+                    number(out, offset_letter(axis), (center[axis] - from[axis]) / length_factor(axis),
                            length_factor(axis));
                 }
                 append_feed(out, m.feed);

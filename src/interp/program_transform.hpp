@@ -13,6 +13,7 @@
 #include "nckit/interp/arc_geometry.hpp"
 #include "nckit/core/axes.hpp"
 #include "nckit/interp/move.hpp"
+#include "nckit/interp/transform_view.hpp"
 
 namespace nckit::interp {
 
@@ -33,25 +34,18 @@ public:
     [[nodiscard]] std::optional<Error> apply(const BlockWords& words, Plane plane, const AxisVector& programmed_work,
                                              AxisValue&& axis_value);
 
-    [[nodiscard]] bool active() const { return mirror_on_ || scale_on_ || rotate_on_; }
+    [[nodiscard]] bool active() const { return state_.active(); }
     //! Work coordinates → transformed work coordinates.
-    [[nodiscard]] AxisVector map(const AxisVector& work) const;
+    [[nodiscard]] AxisVector map(const AxisVector& work) const { return state_.map(work); }
     //! Factor of a length in the plane (arcs): nothing when the plane's axes scale unequally.
-    [[nodiscard]] std::optional<double> plane_scale(Plane plane) const;
+    [[nodiscard]] std::optional<double> plane_scale(Plane plane) const { return state_.plane_scale(plane); }
     //! An odd number of the plane's axes mirrored (by G51.1 or a negative scale).
-    [[nodiscard]] bool reverses(Plane plane) const;
+    [[nodiscard]] bool reverses(Plane plane) const { return state_.reverses(plane); }
+    //! The transforms in force, for the modal view.
+    [[nodiscard]] const TransformView& view() const { return state_; }
 
 private:
-    std::array<bool, axis_count> mirrored_{};
-    AxisVector mirror_at_;
-    bool mirror_on_ = false;
-    AxisVector scale_center_;
-    std::array<double, axis_count> scale_{};
-    bool scale_on_ = false;
-    Plane rotate_plane_ = Plane::xy;
-    double rotate_first_ = 0, rotate_second_ = 0;  //!< centre on the plane's two axes
-    double rotate_deg_ = 0;
-    bool rotate_on_ = false;
+    TransformView state_;
 };
 
 template <class AxisValue>
@@ -69,59 +63,57 @@ std::optional<ProgramTransform::Error> ProgramTransform::apply(const BlockWords&
     };
     if (mirror == g(51, 1)) {
         each_axis([&](Axis a, double v) {
-            mirrored_[index(a)] = true;
-            mirror_at_[a] = v;
+            state_.mirrored[index(a)] = true;
+            state_.mirror_at[a] = v;
         });
     } else if (mirror == g(50, 1)) {
         bool any = false;
         each_axis([&](Axis a, double) {
-            mirrored_[index(a)] = false;
+            state_.mirrored[index(a)] = false;
             any = true;
         });
-        if (!any) mirrored_.fill(false);
+        if (!any) state_.mirrored.fill(false);
     }
-    mirror_on_ = false;
-    for (bool m : mirrored_) mirror_on_ = mirror_on_ || m;
     if (scaling == g(51)) {
-        scale_center_ = programmed_work;
-        each_axis([&](Axis a, double v) { scale_center_[a] = v; });
+        state_.scale_center = programmed_work;
+        each_axis([&](Axis a, double v) { state_.scale_center[a] = v; });
         const Word* p = words.word('P');
         const bool per_axis = words.has('I') || words.has('J') || words.has('K');
         if ((p == nullptr) == !per_axis) {
             return Error{words.group_column(ModalGroup::scaling),
                          "G51 needs P (one factor) or I J K (a factor per axis X Y Z), not both"};
         }
-        scale_.fill(1.0);
+        state_.scale.fill(1.0);
         if (p != nullptr) {
             if (p->value <= 0) return Error{p->column, "G51 P must be positive (a negative factor needs I J K)"};
-            for (std::size_t i = 0; i < 3; ++i) scale_[i] = p->value;  // X Y Z
+            for (std::size_t i = 0; i < 3; ++i) state_.scale[i] = p->value;  // X Y Z
         } else {
             for (char c : {'I', 'J', 'K'}) {
                 const Word* w = words.word(c);
                 if (w == nullptr) continue;
                 if (w->value == 0) return Error{w->column, fmt::format("G51 {} is a factor of 0", c)};
-                scale_[static_cast<std::size_t>(c - 'I')] = w->value;
+                state_.scale[static_cast<std::size_t>(c - 'I')] = w->value;
             }
         }
-        scale_on_ = true;
+        state_.scale_on = true;
     } else if (words.group(ModalGroup::non_modal) == g(50) && sets_transform(words)) {
-        scale_on_ = false;
+        state_.scale_on = false;
     }
     if (rotation == g(68)) {
         const PlaneAxes axes = plane_axes(plane);
-        rotate_plane_ = plane;
-        rotate_first_ = programmed_work[axes.first];
-        rotate_second_ = programmed_work[axes.second];
+        state_.rotate_plane = plane;
+        state_.rotate_first = programmed_work[axes.first];
+        state_.rotate_second = programmed_work[axes.second];
         each_axis([&](Axis a, double v) {
-            if (a == axes.first) rotate_first_ = v;
-            if (a == axes.second) rotate_second_ = v;
+            if (a == axes.first) state_.rotate_first = v;
+            if (a == axes.second) state_.rotate_second = v;
         });
         const Word* r = words.word('R');
         if (r == nullptr) return Error{words.group_column(ModalGroup::rotation), "G68 needs R (the angle, deg)"};
-        rotate_deg_ = r->value;
-        rotate_on_ = true;
+        state_.rotate_deg = r->value;
+        state_.rotate_on = true;
     } else if (rotation == g(69)) {
-        rotate_on_ = false;
+        state_.rotate_on = false;
     }
     return std::nullopt;
 }

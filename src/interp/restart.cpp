@@ -70,14 +70,23 @@ std::uint32_t line_count(const std::string& text) {
 
 //! "#500 = 3" lines for the retained variables that differ between `from` and `to` (a
 //! variable that became vacant is written `= #0`, the vacant variable).
+//! In the LinuxCNC dialect the persistent parameters #5161-#5169 and #5210-#5390 are the G28
+//! position, G92 and the work offsets, which the reader keeps itself: the frame blocks set them
+//! again as G10 L2, G5x and G92 (an assignment would not move the frame).
+bool set_by_frame(int number, const MachineConfig& machine) {
+    return machine.dialect == Dialect::linuxcnc &&
+           ((number >= 5161 && number <= 5169) || (number >= 5210 && number <= 5390));
+}
+
 void retained_assignments(std::string& out, const std::vector<RetainedVariable>& from,
-                          const std::vector<RetainedVariable>& to) {
+                          const std::vector<RetainedVariable>& to, const MachineConfig& machine) {
     auto find = [](const std::vector<RetainedVariable>& in, int number) -> const RetainedVariable* {
         auto it = std::lower_bound(in.begin(), in.end(), number,
                                    [](const RetainedVariable& v, int n) { return v.number < n; });
         return it != in.end() && it->number == number ? &*it : nullptr;
     };
     for (const RetainedVariable& v : to) {
+        if (set_by_frame(v.number, machine)) continue;
         const RetainedVariable* old = find(from, v.number);
         if (old != nullptr && std::bit_cast<std::uint64_t>(old->value) == std::bit_cast<std::uint64_t>(v.value)) {
             continue;
@@ -87,7 +96,8 @@ void retained_assignments(std::string& out, const std::vector<RetainedVariable>&
         out += '\n';
     }
     for (const RetainedVariable& v : from) {
-        if (find(to, v.number) == nullptr) fmt::format_to(std::back_inserter(out), "#{} = #0\n", v.number);
+        if (find(to, v.number) == nullptr && !set_by_frame(v.number, machine))
+            fmt::format_to(std::back_inserter(out), "#{} = #0\n", v.number);
     }
 }
 
@@ -224,17 +234,24 @@ Result<RestartReport> write_restart(Interpreter& interpreter, const RestartTarge
                            report.sequence_number >= 0 ? fmt::format(" N{}", report.sequence_number) : std::string(),
                            report.block);
             writer.append_header(out, source_name);
-            const bool in_frame = frame_can_be_set(report.state, machine);
+            const bool in_frame = frame_can_be_set(report.state);
             frame_comments(out, report.state, machine, in_frame);
             if (settings.retained_at_target) {
-                out += "( retained variables as the interrupted run left them )\n";
-                retained_assignments(out, {}, retained);
+                out += machine.dialect == Dialect::linuxcnc
+                           ? "( persistent parameters as the interrupted run left them )\n"
+                           : "( retained variables as the interrupted run left them )\n";
+                retained_assignments(out, {}, retained, machine);
             }
-            io_blocks(out, report.io);
+            io_blocks(out, report.io, machine);
             if (a.moves) approach_blocks(out, a, machine, decimals, report.worst_deviation_mm);
-            if (in_frame) frame_blocks(out, report.state, machine, a.moves ? &a.point : nullptr);
-            for (int m : report.io.laser_on) fmt::format_to(std::back_inserter(out), "M{}\n", m);
             const ModalView& s = report.state;
+            if (in_frame) {
+                frame_blocks(out, s, machine, a.moves ? &a.point : nullptr);
+                transform_blocks(out, s, machine, a.moves ? &a.point : nullptr);
+                // The header wrote radius mode (G8): the moves and offsets above are radii.
+                if (s.diameter_mode) out += "G7\n";
+            }
+            for (int m : report.io.laser_on) fmt::format_to(std::back_inserter(out), "M{}\n", m);
             fmt::format_to(std::back_inserter(out), "{} {}", plane_code(s.plane), feed_mode_code(s.feed_mode, machine));
             // F0 too: the approach's feed must not stay in force.
             out += " F";
@@ -257,7 +274,7 @@ Result<RestartReport> write_restart(Interpreter& interpreter, const RestartTarge
         if (settings.retained_at_target && interpreter.retained_writes() != retained_writes) {
             retained_writes = interpreter.retained_writes();
             std::vector<RetainedVariable> now = interpreter.retained_values();
-            retained_assignments(out, retained, now);
+            retained_assignments(out, retained, now, machine);
             retained = std::move(now);
         }
         writer.append(out, *pending);

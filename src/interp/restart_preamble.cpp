@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "nckit/core/format_exact.hpp"
+#include "nckit/interp/arc_geometry.hpp"
 #include "nckit/interp/move_gcode.hpp"
 
 namespace nckit::restart_detail {
@@ -91,14 +92,23 @@ void frame_comments(std::string& out, const ModalView& s, const MachineConfig& m
                      : "( positions below are machine coordinates with all of these applied )\n";
 }
 
-void io_blocks(std::string& out, const RestartIo& io) {
+void io_blocks(std::string& out, const RestartIo& io, const MachineConfig& machine) {
     if (io.tool_in_spindle > 0) fmt::format_to(std::back_inserter(out), "T{} M6\n", io.tool_in_spindle);
     if (io.tool_selected != io.tool_in_spindle && io.tool_selected > 0)
         fmt::format_to(std::back_inserter(out), "T{}\n", io.tool_selected);
     if (io.speed_set) {
+        // A Fanuc lathe clamps with the coordinate-setting code and S (G50 in system A, G92 in
+        // B and C), a mode of its own that stays under G97 too; elsewhere G96 D carries the
+        // clamp, as LinuxCNC reads it.
+        const bool lathe = machine.gcode_system != GCodeSystem::none;
+        if (io.rpm_clamp > 0 && lathe) {
+            out += machine.gcode_system == GCodeSystem::a ? "G50 S" : "G92 S";
+            append_exact(out, io.rpm_clamp);
+            out += '\n';
+        }
         if (io.constant_surface_speed) {
             out += "G96";
-            if (io.rpm_clamp > 0) {
+            if (io.rpm_clamp > 0 && !lathe) {
                 out += " D";
                 append_exact(out, io.rpm_clamp);
             }
@@ -149,9 +159,8 @@ void approach_blocks(std::string& out, RestartApproach& a, const MachineConfig& 
     out += '\n';
 }
 
-bool frame_can_be_set(const ModalView& s, const MachineConfig& machine) {
-    return !s.transform_active && !s.diameter_mode && !machine.diameter_mode &&
-           machine.gcode_system != GCodeSystem::a && s.work_system < 6;
+bool frame_can_be_set(const ModalView& s) {
+    return s.work_system < 6;
 }
 
 GcodeFrame program_frame(const ModalView& s, const MachineConfig& machine) {
@@ -162,6 +171,8 @@ GcodeFrame program_frame(const ModalView& s, const MachineConfig& machine) {
     }
     frame.length_factor_mm = s.length_factor_mm;
     frame.incremental = s.incremental;
+    frame.diameter = s.diameter_mode;
+    frame.transform = s.transform;
     return frame;
 }
 
@@ -185,10 +196,16 @@ std::string program_words(const AxisVector& v, const ModalView& s, const Machine
 }  // namespace
 
 void frame_blocks(std::string& out, const ModalView& s, const MachineConfig& machine, const AxisVector* point) {
+    const GCodeSystem system = machine.gcode_system;
     out += "( the program's frame at the target )\n";
-    out += s.length_factor_mm == 1.0 ? "G21\n" : "G20\n";
-    fmt::format_to(std::back_inserter(out), "G10 L2 P{}{}\n", s.work_system + 1,
-                   program_words(s.work_offset, s, machine, false));
+    // Lathe system C writes inch and metric as G70 / G71.
+    const bool metric = s.length_factor_mm == 1.0;
+    out += system == GCodeSystem::c ? (metric ? "G71\n" : "G70\n") : (metric ? "G21\n" : "G20\n");
+    // Every work system that holds an offset (a later block may select it), the active one always.
+    for (std::size_t k = 0; k < s.work_offsets.size(); ++k) {
+        const std::string words = program_words(s.work_offsets[k], s, machine, k != s.work_system);
+        if (!words.empty()) fmt::format_to(std::back_inserter(out), "G10 L2 P{}{}\n", k + 1, words);
+    }
     fmt::format_to(std::back_inserter(out), "G{}\n", 54 + s.work_system);
     if (const std::string words = program_words(s.g52_offset, s, machine, true); !words.empty()) {
         out += "G52" + words + '\n';
@@ -209,14 +226,74 @@ void frame_blocks(std::string& out, const ModalView& s, const MachineConfig& mac
     bool g92 = false;
     for (const AxisConfig& axis : machine.axes) g92 = g92 || s.g92_offset[axis.axis] != 0.0;
     if (g92 && point != nullptr) {
-        // G92 makes the point the tool stands at read as the program read it.
+        // G92 (G50 in lathe system A) makes the point the tool stands at read as the program
+        // read it.
         AxisVector reads;
         for (const AxisConfig& axis : machine.axes) {
             const Axis a = axis.axis;
             reads[a] = (*point)[a] - s.work_offset[a] - s.g52_offset[a] - s.tool_offset[a] - s.g92_offset[a];
         }
-        out += "G92" + program_words(reads, s, machine, false) + '\n';
+        out += system == GCodeSystem::a ? "G50" : "G92";
+        out += program_words(reads, s, machine, false) + '\n';
     }
+}
+
+void transform_blocks(std::string& out, const ModalView& s, const MachineConfig& machine, const AxisVector* point) {
+    const TransformView& t = s.transform;
+    if (!t.active()) return;
+    out += "( mirror, scaling and rotation at the target )\n";
+    auto length = [&](Axis axis, double mm) {
+        const AxisConfig* config = machine.find(axis);
+        return config != nullptr && config->kind == AxisKind::rotary ? mm : mm / s.length_factor_mm;
+    };
+    std::string mirror;
+    for (const AxisConfig& axis : machine.axes) {
+        if (!t.mirrored[index(axis.axis)]) continue;
+        mirror += ' ';
+        mirror += letter(axis.axis);
+        append_exact(mirror, length(axis.axis, t.mirror_at[axis.axis]));
+    }
+    if (!mirror.empty()) out += "G51.1" + mirror + '\n';
+    if (t.scale_on) {
+        out += "G51";
+        for (const AxisConfig& axis : machine.axes) {
+            out += ' ';
+            out += letter(axis.axis);
+            append_exact(out, length(axis.axis, t.scale_center[axis.axis]));
+        }
+        // A factor per axis (I J K for X Y Z): P takes no negative factor.
+        for (Axis axis : {Axis::X, Axis::Y, Axis::Z}) {
+            if (machine.find(axis) == nullptr) continue;
+            out += ' ';
+            out += "IJK"[index(axis)];
+            append_exact(out, t.scale[index(axis)]);
+        }
+        out += '\n';
+    }
+    if (t.rotate_on) {
+        const PlaneAxes axes = plane_axes(t.rotate_plane);
+        fmt::format_to(std::back_inserter(out), "{}\nG68 {}", plane_code(t.rotate_plane), letter(axes.first));
+        append_exact(out, length(axes.first, t.rotate_first));
+        out += ' ';
+        out += letter(axes.second);
+        append_exact(out, length(axes.second, t.rotate_second));
+        out += " R";
+        append_exact(out, t.rotate_deg);
+        out += '\n';
+    }
+    if (point == nullptr) return;
+    // The reader takes the point it stood at when the transforms came on as the programmed
+    // point; one move to where the tool stands, in the transformed program's coordinates, makes
+    // the programmed point the one the original run had (incremental words start from it).
+    const GcodeFrame frame = program_frame(s, machine);
+    const AxisVector programmed = t.unmap(*point - frame.origin_mm);
+    out += "G0";
+    for (const AxisConfig& axis : machine.axes) {
+        out += ' ';
+        out += letter(axis.axis);
+        append_exact(out, length(axis.axis, programmed[axis.axis]));
+    }
+    out += '\n';
 }
 
 }  // namespace nckit::restart_detail

@@ -132,6 +132,15 @@ int NckitInterp::start_run() {
         return fail_with(*program_error_);
     }
     interpreter_.emplace(*machine_, std::move(source).value(), run_options());
+    if (!settings_.journal_file.empty()) {
+        auto journal = RunJournal::create(settings_.journal_file, *interpreter_, program_path_,
+                                          JournalOptions{settings_.journal_fsync_ms});
+        if (!journal) {
+            program_error_ = journal.diagnostics().front();
+            return fail_with(*program_error_);
+        }
+        journal_ = std::move(journal).value();
+    }
     canon_.emplace(*machine_, settings_.g64_tolerance_mm, settings_.exact_path, settings_.line_comments);
     running_ = &*interpreter_;
     moves_taken_ = 0;
@@ -146,6 +155,7 @@ int NckitInterp::close() {
     if (running_ == &*interpreter_ || !interpreter_) running_ = nullptr;
     interpreter_.reset();
     canon_.reset();
+    journal_.reset();  // an unfinished run keeps the blocks it completed; the last is not among them
     pending_.reset();
     pending_end_ = false;
     ended_ = false;
@@ -210,6 +220,7 @@ int NckitInterp::read() {
                 return fail_with(*program_error_);
             }
             note_move(*move, *interpreter_);
+            if (journal_) journal_->on_move(*interpreter_, *move);
             pending_ordinal_ = moves_taken_++;
             pending_ = std::move(*move);
             return static_cast<int>(INTERP_OK);
@@ -227,6 +238,7 @@ int NckitInterp::execute() {
     return guarded(error_, [&] {
         if (pending_) {
             issue_messages(pending_ordinal_);
+            if (journal_) journal_->on_reached(pending_->where);
             AfterMove after = canon_->emit(*pending_, view_);
             pending_.reset();
             return static_cast<int>(after == AfterMove::wait_for_motion ? INTERP_EXECUTE_FINISH : INTERP_OK);
@@ -234,6 +246,10 @@ int NckitInterp::execute() {
         if (pending_end_) {
             issue_messages(std::nullopt);
             canon_->emit_program_end();
+            if (journal_) {
+                journal_->finish();
+                if (journal_->error()) return fail_with(*journal_->error());
+            }
             pending_end_ = false;
             ended_ = true;
             return static_cast<int>(INTERP_EXIT);

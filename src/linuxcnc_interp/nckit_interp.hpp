@@ -14,6 +14,7 @@
 #include "canon_output.hpp"
 #include "linuxcnc_headers.hpp"
 #include "nckit/interp/interpreter.hpp"
+#include "nckit/interp/run_journal.hpp"
 #include "plugin_settings.hpp"
 
 namespace nckit::lcnc {
@@ -71,6 +72,9 @@ private:
     std::string program_path_;                // the opened program; empty: none
     std::optional<Interpreter> interpreter_;  // made at the first read (block delete is known then)
     std::optional<CanonOutput> canon_;
+    //! [NCKIT] JOURNAL: the run's journal; a block is recorded once a move of a later block has
+    //! been executed (handed to LinuxCNC), or at the program end.
+    std::optional<RunJournal> journal_;
     //! MDI: one program of all commands given since the last program run, so that modes and
     //! variables carry from one command to the next. Dropped by an error, init and a program run.
     std::optional<Interpreter> mdi_;

@@ -94,10 +94,19 @@ std::optional<std::string> read_plugin_settings(const std::filesystem::path& ini
         } else if (key == "LINE_COMMENTS") {
             if (value != "0" && value != "1") return where(fmt::format("LINE_COMMENTS = {}: expected 0 or 1", value));
             settings.line_comments = value == "1";
+        } else if (key == "JOURNAL") {
+            settings.journal_file = value.empty() ? std::filesystem::path() : path_of(value);
+        } else if (key == "JOURNAL_FSYNC_MS") {
+            std::int64_t n = 0;
+            auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), n);
+            if (ec != std::errc{} || end != value.data() + value.size() || n < 0 || n > 3'600'000) {
+                return where(fmt::format("JOURNAL_FSYNC_MS = {}: expected a whole number of ms, 0 to 3600000", value));
+            }
+            settings.journal_fsync_ms = n;
         } else {
             return where(
                 fmt::format("unknown key {} (MACHINE, LIBRARY, RETAINED, MAX_BLOCKS, G64_TOLERANCE, "
-                            "EXACT_PATH, TOOL_TABLE, LINE_COMMENTS)",
+                            "EXACT_PATH, TOOL_TABLE, LINE_COMMENTS, JOURNAL, JOURNAL_FSYNC_MS)",
                             key));
         }
     }

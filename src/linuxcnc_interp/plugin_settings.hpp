@@ -24,6 +24,10 @@ struct PluginSettings {
     bool tool_table_inch = false;
     //! LINE_COMMENTS = 1: a COMMENT("nckit-line N") before the motions of each source line.
     bool line_comments = false;
+    //! JOURNAL: the run journal of each program run (docs/restart.md); empty: none.
+    std::filesystem::path journal_file;
+    //! JOURNAL_FSYNC_MS: the longest time between a journal record and its fsync, ms.
+    std::int64_t journal_fsync_ms = 250;
 };
 
 //! The settings from `ini_path`, or an error message naming the file, line and key at fault.

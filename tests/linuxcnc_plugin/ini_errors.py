@@ -6,7 +6,8 @@ plug-in, report the setting at fault as `FILE:LINE:COL: error: ...` and issue no
 
 Cases: a tool table that does not exist ([EMCIO] TOOL_TABLE, LinuxCNC's own key), a tool table
 with a bad row ([NCKIT] TOOL_TABLE), EXACT_PATH with a value other than 0 or 1, an unknown
-[NCKIT] key. Exit status 0 when every case is reported so, 1 otherwise.
+[NCKIT] key, a JOURNAL_FSYNC_MS that is no number, a JOURNAL in a folder that does not exist.
+Exit status 0 when every case is reported so, 1 otherwise.
 """
 import argparse
 import os
@@ -27,6 +28,10 @@ CASES = [
      r"plugin\.ini:2:1: error: \[NCKIT\] EXACT_PATH = yes: expected 0 or 1"),
     ("unknown key", "[NCKIT]\nTOOLTABLE = tools.tbl\n", None,
      r"plugin\.ini:2:1: error: \[NCKIT\] unknown key TOOLTABLE"),
+    ("bad JOURNAL_FSYNC_MS", "[NCKIT]\nJOURNAL = run.journal\nJOURNAL_FSYNC_MS = soon\n", None,
+     r"plugin\.ini:3:1: error: \[NCKIT\] JOURNAL_FSYNC_MS = soon: expected a whole number of ms"),
+    ("journal in a missing folder", "[NCKIT]\nJOURNAL = no/such/folder/run.journal\n", None,
+     r"run\.journal:1:1: error: run journal: cannot create"),
 ]
 
 

@@ -48,7 +48,8 @@ struct InterpreterOptions {
     //! LinuxCNC dialect: its parameter file (`NUMBER<tab>VALUE` lines, like LinuxCNC's .var).
     std::filesystem::path retained_file;
     //! When set, #500-#999 start with these values (the others vacant) instead of the file's,
-    //! and nothing is written back: a restart resumes with the values its run journal kept.
+    //! and nothing is written back: a restart resumes with the values its run journal kept. In
+    //! the LinuxCNC dialect: the persistent parameters, read as if from its parameter file.
     std::optional<std::vector<RetainedVariable>> retained_start;
     //! Write changed #500-#999 back at the end of the run (a check reads them but keeps none).
     bool save_retained = true;
@@ -114,10 +115,12 @@ public:
     //! The machine stands at `machine` (machine coordinates, mm / deg) now, moved outside the
     //! program: the next move starts there.
     void set_position(const AxisVector& machine);
-    //! Counts the writes to #500-#999 so far (Fanuc dialect; 0 in the LinuxCNC dialect, whose
-    //! parameter file is its own): a run journal reads retained_values() only when it moves.
+    //! Counts the writes to #500-#999 so far (Fanuc dialect), or the changes of the parameters
+    //! LinuxCNC keeps in its parameter file (LinuxCNC dialect: #5161-#5390 and those the file
+    //! had): a run journal reads retained_values() only when it moves.
     [[nodiscard]] std::uint64_t retained_writes() const;
-    //! The retained variables that hold a number now, by number.
+    //! The retained variables that hold a number now, by number (LinuxCNC dialect: the
+    //! persistent parameters, as their file would have them).
     [[nodiscard]] std::vector<RetainedVariable> retained_values() const;
 
 private:

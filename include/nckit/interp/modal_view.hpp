@@ -3,19 +3,22 @@
 // its coordinates in (units, work offsets) and its active modes. Moves carry machine coordinates
 // in mm; with this view a host can hand them on as the program wrote them (LinuxCNC's canonical
 // calls take program coordinates and the offsets separately).
+#include <array>
 #include <cstddef>
 
 #include "nckit/core/axes.hpp"
 #include "nckit/interp/move.hpp"
+#include "nckit/interp/transform_view.hpp"
 
 namespace nckit {
 
 struct ModalView {
-    double length_factor_mm = 1.0;  //!< mm per program length unit: 25.4 under G20
-    std::size_t work_system = 0;    //!< 0..5 for G54..G59
-    AxisVector work_offset;         //!< origin of the active G54..G59 system, machine mm / deg
-    AxisVector g92_offset;          //!< G92 / G50 coordinate shift, mm / deg
-    AxisVector g52_offset;          //!< G52 local shift, mm / deg
+    double length_factor_mm = 1.0;             //!< mm per program length unit: 25.4 under G20
+    std::size_t work_system = 0;               //!< 0..5 for G54..G59
+    AxisVector work_offset;                    //!< origin of the active G54..G59 system, machine mm / deg
+    std::array<AxisVector, 6> work_offsets{};  //!< all of G54..G59, machine mm / deg
+    AxisVector g92_offset;                     //!< G92 / G50 coordinate shift, mm / deg
+    AxisVector g52_offset;                     //!< G52 local shift, mm / deg
     Plane plane = Plane::xy;
     bool incremental = false;  //!< G91
     FeedMode feed_mode = FeedMode::per_minute;
@@ -34,6 +37,7 @@ struct ModalView {
     AxisVector tool_offset;               //!< tool length offset in force, machine mm
     bool cutter_compensation = false;     //!< G41/G42 engaged: a move's end depends on the next
     bool transform_active = false;        //!< G51.1 mirror, G51 scaling or G68 rotation in force
+    TransformView transform;              //!< what they are
 };
 
 }  // namespace nckit

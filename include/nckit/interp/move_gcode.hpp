@@ -6,6 +6,7 @@
 
 #include "nckit/core/machine.hpp"
 #include "nckit/interp/move.hpp"
+#include "nckit/interp/transform_view.hpp"
 
 namespace nckit {
 
@@ -13,13 +14,16 @@ namespace nckit {
 //! where G94 is the facing cycle.
 [[nodiscard]] const char* feed_mode_code(FeedMode mode, const MachineConfig& machine);
 
-//! The frame written coordinates are in: program = (machine − origin) / factor on every
-//! linear axis (rotary axes: machine − origin); incremental: each axis word is the distance
-//! from the last point written. The default is the machine frame, absolute, in mm.
+//! The frame written coordinates are in: program = unmap(machine − origin) / factor on every
+//! linear axis (rotary axes: unmap(machine − origin)), where unmap undoes the mirror, scaling
+//! and rotation in force; X doubled in diameter mode; incremental: each axis word is the
+//! distance from the last point written. The default is the machine frame, absolute, in mm.
 struct GcodeFrame {
     AxisVector origin_mm;           //!< machine coordinates of the program's zero
     double length_factor_mm = 1.0;  //!< mm per program length unit: 25.4 under G20
     bool incremental = false;       //!< G91
+    bool diameter = false;          //!< X words are diameters (arc centre offsets stay radii)
+    TransformView transform;        //!< G51.1 / G51 / G68 the reader has in force
 };
 
 class GcodeWriter {
@@ -62,6 +66,8 @@ private:
     //! `value` in program units; `scale_mm` mm per unit, for the deviation of a rounding.
     void number(std::string& out, char letter, double value, double scale_mm = 1.0);
     [[nodiscard]] double length_factor(Axis axis) const;
+    //! A machine point in the frame's program coordinates (before units and diameter).
+    [[nodiscard]] AxisVector to_program(const AxisVector& machine) const;
     void append_axes(std::string& out, const AxisVector& position);
     void append_feed(std::string& out, const Feed& feed);
     //! G61 or G64 P before a move whose path control differs from the last one written; a G9

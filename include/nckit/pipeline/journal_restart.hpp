@@ -8,7 +8,7 @@
 #include "nckit/core/result.hpp"
 #include "nckit/interp/interpreter.hpp"
 #include "nckit/interp/restart.hpp"
-#include "nckit/pipeline/run_journal.hpp"
+#include "nckit/interp/run_journal.hpp"
 
 namespace nckit {
 

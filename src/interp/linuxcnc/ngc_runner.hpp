@@ -36,6 +36,10 @@ public:
     [[nodiscard]] const std::string& current_file() const { return *current_->file(); }
     void append_main(std::string_view text) { files_.at(main_file_)->append(text); }
     void set_position(const AxisVector& machine) { executor_.set_position(machine); }
+    //! The parameters LinuxCNC keeps in its file (#5161-#5390 and those the file had), now.
+    [[nodiscard]] std::vector<RetainedVariable> persistent_values() const;
+    //! Counts the changes of persistent_values() seen so far (a run journal records them).
+    [[nodiscard]] std::uint64_t persistent_changes() const;
 
 private:
     //! Where an O-word label was seen (LinuxCNC's offset table).
@@ -98,6 +102,8 @@ private:
     [[nodiscard]] std::optional<double> live_numbered(std::int64_t n) const;
     [[nodiscard]] std::optional<double> live_named(const std::string& name) const;
     std::optional<Diagnostic> load_parameter_file();
+    std::optional<Diagnostic> apply_parameters(const std::map<std::int64_t, double>& values,
+                                               const SourceLocation& where);
     [[nodiscard]] double to_program_units(double mm) const;
     //! `#123` and `#<name>` in a (print,...) or (debug,...) text replaced by their values.
     [[nodiscard]] std::string substitute_parameters(const std::string& text) const;
@@ -130,9 +136,12 @@ private:
     std::uint64_t line_offset_ = 0;
     std::uint64_t main_offset_ = 0;
     std::int64_t counted_lines_ = 0;
-    std::set<std::int64_t> in_file_;  //!< numbers the parameter file had: written back
-    bool repeating_ = false;          //!< a loop or call has run: lines count against the budget
-    SourceLocation call_location_;    //!< the call a forward search for its sub started from
+    std::set<std::int64_t> in_file_;                        //!< numbers the parameter file had: written back
+    mutable std::vector<std::int64_t> persistent_numbers_;  //!< in_file_ and those LinuxCNC always writes
+    mutable std::vector<RetainedVariable> persistent_seen_;
+    mutable std::uint64_t persistent_changes_ = 0;
+    bool repeating_ = false;        //!< a loop or call has run: lines count against the budget
+    SourceLocation call_location_;  //!< the call a forward search for its sub started from
 
     // LinuxCNC's skipping state.
     std::string skipping_o_;        //!< skipping forward to this label; empty: not skipping

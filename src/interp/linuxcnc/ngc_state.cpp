@@ -177,14 +177,21 @@ std::string NgcRunner::substitute_parameters(const std::string& text) const {
 }
 
 std::optional<Diagnostic> NgcRunner::load_parameter_file() {
+    auto file = std::make_shared<const std::string>(options_.retained_file.string());
+    std::map<std::int64_t, double> values;
+    if (options_.retained_start) {
+        // A restart from a run journal: the persistent values as the interrupted run found them.
+        for (const RetainedVariable& v : *options_.retained_start) {
+            if (parameters_.in_range(v.number)) values[v.number] = v.value;
+        }
+        return apply_parameters(values, make_location(file, 1, 1));
+    }
     if (options_.retained_file.empty()) return std::nullopt;
     std::ifstream in(options_.retained_file);
     if (!in) return std::nullopt;  // LinuxCNC starts without one and writes it at the end
-    auto file = std::make_shared<const std::string>(options_.retained_file.string());
     std::string text;
     std::uint32_t line_number = 0;
     std::int64_t previous = 0;
-    std::map<std::int64_t, double> restored;
     while (std::getline(in, text) && line_number < 100000) {
         ++line_number;
         std::istringstream words(text);
@@ -200,6 +207,15 @@ std::optional<Diagnostic> NgcRunner::load_parameter_file() {
                             "parameter numbers out of order: they must increase down the file");
         }
         previous = n;
+        values[n] = value;
+    }
+    return apply_parameters(values, make_location(file, 1, 1));
+}
+
+std::optional<Diagnostic> NgcRunner::apply_parameters(const std::map<std::int64_t, double>& values,
+                                                      const SourceLocation& where) {
+    std::map<std::int64_t, double> restored;
+    for (const auto& [n, value] : values) {
         if (n >= 5210 && n <= 5220) restored[n] = value;  // read live later: kept aside here
         parameters_.write(n, value);
         in_file_.insert(n);
@@ -213,7 +229,7 @@ std::optional<Diagnostic> NgcRunner::load_parameter_file() {
     // blocks (G55; G92 X..) so the Executor keeps its own rules for them.
     auto run = [&](std::vector<Word> words) -> std::optional<Diagnostic> {
         Block block;
-        block.location = make_location(file, 1, 1);
+        block.location = where;
         block.words = std::move(words);
         std::vector<Move> events;
         bool program_end = false;
@@ -240,8 +256,32 @@ std::optional<Diagnostic> NgcRunner::load_parameter_file() {
     return std::nullopt;
 }
 
+std::vector<RetainedVariable> NgcRunner::persistent_values() const {
+    if (persistent_numbers_.empty()) {  // the file's numbers are known once it is read
+        for (std::int64_t n = 1; n <= max_parameter; ++n) {
+            if (in_file_.contains(n) || required_in_file(n)) persistent_numbers_.push_back(n);
+        }
+    }
+    std::vector<RetainedVariable> out;
+    out.reserve(persistent_numbers_.size());
+    for (std::int64_t n : persistent_numbers_) out.push_back({static_cast<int>(n), parameters_.read(n)});
+    return out;
+}
+
+std::uint64_t NgcRunner::persistent_changes() const {
+    // Compared with the values seen last: a G10, G92 or G5x block changes them as much as an
+    // assignment does, so counting writes would miss changes.
+    std::vector<RetainedVariable> now = persistent_values();
+    if (now != persistent_seen_) {
+        persistent_seen_ = std::move(now);
+        ++persistent_changes_;
+    }
+    return persistent_changes_;
+}
+
 std::optional<Diagnostic> NgcRunner::save_parameters() const {
-    if (options_.retained_file.empty() || !options_.save_retained) return std::nullopt;
+    // A restart's search starts from a journal's values: the file is not its to write.
+    if (options_.retained_file.empty() || !options_.save_retained || options_.retained_start) return std::nullopt;
     std::string out;
     for (std::int64_t n = 1; n <= max_parameter; ++n) {
         if (!in_file_.contains(n) && !required_in_file(n)) continue;

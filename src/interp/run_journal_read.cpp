@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "nckit/pipeline/run_journal.hpp"
+#include "nckit/interp/run_journal.hpp"
 
 namespace nckit {
 
@@ -44,11 +44,12 @@ bool parse_number(std::string_view text, T& value) {
     return error == std::errc{} && end == text.data() + text.size();
 }
 
-//! "#500=1.25" or "#500=-" (vacant).
+//! "#500=1.25" or "#500=-" (vacant); "#5221=10" in the LinuxCNC dialect.
 bool parse_retained(std::string_view word, int& number, std::optional<double>& value) {
     const std::size_t eq = word.find('=');
     if (word.size() < 4 || word[0] != '#' || eq == std::string_view::npos) return false;
-    if (!parse_number(word.substr(1, eq - 1), number) || number < 500 || number > 999) return false;
+    // #500-#999, or in the LinuxCNC dialect its persistent parameters (#1-#5601).
+    if (!parse_number(word.substr(1, eq - 1), number) || number < 1 || number > 5601) return false;
     const std::string_view text = word.substr(eq + 1);
     if (text == "-") {
         value.reset();

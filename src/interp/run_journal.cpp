@@ -1,4 +1,4 @@
-#include "nckit/pipeline/run_journal.hpp"
+#include "nckit/interp/run_journal.hpp"
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -184,11 +184,11 @@ void RunJournal::on_move(const Interpreter& interpreter, const Move& move) {
     if (!pending_.empty()) pending_.back().record.position = position_;
 }
 
-void RunJournal::on_piece(const TrajectoryPiece& piece) {
-    // Pieces come in move order: every block before the first pending block of this piece's
-    // line is behind the machine. A piece whose block is already complete changes nothing.
+void RunJournal::on_reached(const SourceLocation& where) {
+    // Motion is reached in move order: every block before the first pending block of this
+    // line is behind the machine. A line whose block is already complete changes nothing.
     for (std::size_t i = 0; i < pending_.size(); ++i) {
-        if (pending_[i].file == piece.where.file.get() && pending_[i].record.line == piece.where.line) {
+        if (pending_[i].file == where.file.get() && pending_[i].record.line == where.line) {
             complete(i);
             return;
         }

@@ -16,7 +16,6 @@
 #include "nckit/core/result.hpp"
 #include "nckit/interp/block_counter.hpp"
 #include "nckit/interp/interpreter.hpp"
-#include "nckit/plan/trajectory.hpp"
 
 namespace nckit {
 
@@ -57,8 +56,9 @@ struct JournalBlock {
 [[nodiscard]] std::string journal_block_line(const JournalBlock& block, const std::string& axes);
 
 //! Writes the journal of one run. Feed it every move (on_move, right after the interpreter
-//! returned it) and every trajectory piece once the drive has taken it (on_piece): a block is
-//! complete when a piece of a later block has been taken, or at finish().
+//! returned it) and, once the machine has taken a piece of motion, the source location of the
+//! block it came from (on_reached: a trajectory piece's, or a move a LinuxCNC plug-in has
+//! executed): a block is complete when a later block has been reached, or at finish().
 class RunJournal {
 public:
     //! Creates (truncates) `path` and writes the header; an error when it cannot.
@@ -69,7 +69,7 @@ public:
     ~RunJournal();
 
     void on_move(const Interpreter& interpreter, const Move& move);
-    void on_piece(const TrajectoryPiece& piece);
+    void on_reached(const SourceLocation& where);
     //! The run ended clean: every block is complete; the journal is synced and closed.
     void finish();
     //! The first write or sync that failed, if any (the journal stops there).
