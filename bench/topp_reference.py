@@ -17,7 +17,13 @@ Joins whose directions differ by more than --kink-rad (default 1e-3 rad: written
 corners: the reference stops there (exact path; a blend within G64 P would be faster, so for
 programs with corners this is not the optimum and is reported as "exact-path").
 
-Usage: bench/topp_reference.py PROGRAM [--vmax 100] [--amax 500] [--kink-rad 1e-3]
+With --jmax J the jerk the path itself takes at each point joins the constraints:
+|q_i''' * sdot^3 + 3 q_i'' * sdot * sddot| <= J (turning jerk and coupling; the path jerk term
+q_i' * sdddot is left out, so speed changes switch their acceleration at once). For a given u it
+is linear in sddot; the maximum velocity curve is lowered by bisection where it leaves no sddot
+(docs/planner.md, "The time-optimal reference").
+
+Usage: bench/topp_reference.py PROGRAM [--vmax 100] [--amax 500] [--jmax J] [--kink-rad 1e-3]
 Prints JSON: {"program", "time_s", "grid_points", "refinements": [[points, time_s], ...],
 "corners"}.
 """
