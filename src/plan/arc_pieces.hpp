@@ -44,7 +44,7 @@ inline constexpr double jerk_limited_coupling_share = 0.8;
 //! axes', so that neighbouring pieces share one S-curve run in the look-ahead) and the highest
 //! speed v that its own derivative bounds allow with them:
 //! d1·v <= vmax, d2·v² + d1·a <= amax and d3·v³ + 3·d2·v·a + d1·j <= jmax on every axis.
-//! Returns false (out untouched) when the arc is better left whole.
+//! Returns false when the arc is better left whole (out is then not to be used).
 [[nodiscard]] bool split_arc_jerk_limited(const PathSegment& arc, const MachineConfig& machine, double feed_mm_s,
                                           std::vector<ArcPiece>& out);
 
