@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Cycle times of the planner programs against the grid TOPP optimum (bench/topp_reference.py):
-# nckit trapezoid, nckit S-curve at j 50,000 and 5,000 mm/s³; 100 mm/s and 500 mm/s² per axis.
+# nckit trapezoid, nckit S-curve at j 50,000 and 5,000 mm/s³ against the reference with the
+# turning jerk (topp_reference.py --jmax); 100 mm/s and 500 mm/s² per axis.
 # Prints a Markdown table. Usage: bench/planner_optimum.sh [NCKIT_BINARY]
 set -euo pipefail
 repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -19,8 +20,13 @@ for jerk in 50000 5000; do
 done
 cycle() { "$nckit" plan "$programs/$1" --machine "$work/j$2.toml" --profile "$3" --json |
           python3 -c 'import json,sys; print("%.3f" % json.load(sys.stdin)["cycle_time_s"])'; }
-echo "| program | optimum (s) | nckit trapezoid (s) | ratio | S-curve j 50,000 (s) | S-curve j 5,000 (s) |"
-echo "|---|---:|---:|---:|---:|---:|"
+echo "| program | optimum (s) | nckit trapezoid (s) | ratio | S-curve j 50,000 (s) | jerk reference (s) | ratio | S-curve j 5,000 (s) | jerk reference (s) | ratio |"
+echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+reference() {  # PROGRAM [--jmax J]: seconds, with the number of corner stops when there are any
+  python3 "$repo/bench/topp_reference.py" "$programs/$1" --max-points 1000000 "${@:2}" |
+    python3 -c 'import json,sys; r=json.load(sys.stdin); print("%.3f%s" % (r["time_s"], " (exact path, %d stops)" % r["corners"] if r["corners"] else ""))'
+}
+ratio() { python3 -c "print('%.3f' % ($1 / float('$2'.split()[0])))"; }
 for prog in circle_g2 circle_2000 semicircles_100 square_100 slot slot_f6000 raster_3d circle_8arcs; do
   trap_s=$(cycle "$prog.ngc" 50000 trapezoid)
   s50=$(cycle "$prog.ngc" 50000 scurve)
@@ -28,11 +34,11 @@ for prog in circle_g2 circle_2000 semicircles_100 square_100 slot slot_f6000 ras
   # Polylines: their optimum is the best curve within G64 P, which the grid reference (it follows
   # the programmed path and stops at corners) does not compute.
   if [[ $prog == circle_2000 || $prog == raster_3d ]]; then
-    echo "| $prog | not computed | $trap_s | | $s50 | $s5 |"
+    echo "| $prog | not computed | $trap_s | | $s50 | | | $s5 | | |"
     continue
   fi
-  opt=$(python3 "$repo/bench/topp_reference.py" "$programs/$prog.ngc" --max-points 1000000 |
-        python3 -c 'import json,sys; r=json.load(sys.stdin); print("%.3f%s" % (r["time_s"], " (exact path, %d stops)" % r["corners"] if r["corners"] else ""))')
-  ratio=$(python3 -c "print('%.3f' % ($trap_s / float('$opt'.split()[0])))")
-  echo "| $prog | $opt | $trap_s | $ratio | $s50 | $s5 |"
+  opt=$(reference "$prog.ngc")
+  ref50=$(reference "$prog.ngc" --jmax 50000)
+  ref5=$(reference "$prog.ngc" --jmax 5000)
+  echo "| $prog | $opt | $trap_s | $(ratio "$trap_s" "$opt") | $s50 | $ref50 | $(ratio "$s50" "$ref50") | $s5 | $ref5 | $(ratio "$s5" "$ref5") |"
 done

@@ -17,7 +17,13 @@ Joins whose directions differ by more than --kink-rad (default 1e-3 rad: written
 corners: the reference stops there (exact path; a blend within G64 P would be faster, so for
 programs with corners this is not the optimum and is reported as "exact-path").
 
-Usage: bench/topp_reference.py PROGRAM [--vmax 100] [--amax 500] [--kink-rad 1e-3]
+With --jmax J the jerk the path itself takes at each point joins the constraints:
+|q_i''' * sdot^3 + 3 q_i'' * sdot * sddot| <= J (turning jerk and coupling; the path jerk term
+q_i' * sdddot is left out, so speed changes switch their acceleration at once). For a given u it
+is linear in sddot; the maximum velocity curve is lowered by bisection where it leaves no sddot
+(docs/planner.md, "The time-optimal reference").
+
+Usage: bench/topp_reference.py PROGRAM [--vmax 100] [--amax 500] [--jmax J] [--kink-rad 1e-3]
 Prints JSON: {"program", "time_s", "grid_points", "refinements": [[points, time_s], ...],
 "corners"}.
 """
@@ -88,13 +94,18 @@ class Piece:
         self.k = sweep / self.length  # rad per mm of s
 
     def derivatives(self, s):
+        return self.derivatives3(s)[:2]
+
+    def derivatives3(self, s):
+        """First, second and third derivative of q at s."""
         if self.kind == "line":
-            return self.dir, [0.0, 0.0, 0.0]
+            return self.dir, [0.0, 0.0, 0.0], [0.0, 0.0, 0.0]
         th = self.a0 + self.sign * self.k * s
         rk = self.r * self.k
         d1 = [-self.sign * rk * math.sin(th), self.sign * rk * math.cos(th), self.dz / self.length]
         d2 = [-rk * self.k * math.cos(th), -rk * self.k * math.sin(th), 0.0]
-        return d1, d2
+        d3 = [self.sign * rk * self.k * self.k * math.sin(th), -self.sign * rk * self.k * self.k * math.cos(th), 0.0]
+        return d1, d2, d3
 
 
 def bounds(d1, d2, amax):
@@ -132,27 +143,66 @@ def sddot_range(d1, d2, u, amax):
     return max(a + b * u for a, b in lows), min(a + b * u for a, b in ups)
 
 
-def topp_time(pieces, stops, points, vmax, amax):
+def sddot_range_jerk(d1, d2, d3, u, amax, jmax):
+    """sddot bounds at u, with (jmax given) the jerk the path itself takes at speed sqrt(u) and
+    path acceleration sddot, the path jerk term q'(s) * sdddot left out:
+    |d3_i * sdot^3 + 3 * d2_i * sdot * sddot| <= jmax, linear in sddot for a given u."""
+    lo, hi = sddot_range(d1, d2, u, amax)
+    if jmax is None or u <= 0:
+        return lo, hi
+    sdot = math.sqrt(u)
+    for i in range(3):
+        turning = d3[i] * sdot ** 3
+        if abs(d2[i]) > 1e-15:
+            b1 = (jmax - turning) / (3 * d2[i] * sdot)
+            b2 = (-jmax - turning) / (3 * d2[i] * sdot)
+            lo, hi = max(lo, min(b1, b2)), min(hi, max(b1, b2))
+        elif abs(turning) > jmax:
+            return 1.0, -1.0
+    return lo, hi
+
+
+def mvc_jerk(d1, d2, d3, feed, vmax, amax, jmax):
+    """The largest u at which some sddot keeps every axis's speed, acceleration and (jmax
+    given) jerk as in sddot_range_jerk: the acceleration-only curve, lowered by bisection."""
+    u = mvc(d1, d2, feed, vmax, amax)
+    if jmax is None or not any(abs(x) > 1e-15 for x in d2 + d3):
+        return u
+    low, high = sddot_range_jerk(d1, d2, d3, u, amax, jmax)
+    if low <= high:
+        return u
+    lo_u, hi_u = 0.0, u
+    for _ in range(50):
+        mid = 0.5 * (lo_u + hi_u)
+        low, high = sddot_range_jerk(d1, d2, d3, mid, amax, jmax)
+        if low <= high:
+            lo_u = mid
+        else:
+            hi_u = mid
+    return lo_u
+
+
+def topp_time(pieces, stops, points, vmax, amax, jmax=None):
     total = sum(p.length for p in pieces)
     ds_target = total / points
-    grid = []  # (d1, d2, feed, forced_stop)
+    grid = []  # (ds, d1, d2, d3, feed, forced_stop)
     for n, p in enumerate(pieces):
         m = max(2, math.ceil(p.length / ds_target))
         for k in range(m):
             s = p.length * k / m
-            d1, d2 = p.derivatives(s)
-            grid.append((p.length / m, d1, d2, p.feed, k == 0 and n in stops))
-    d1, d2 = pieces[-1].derivatives(pieces[-1].length)
-    grid.append((0.0, d1, d2, pieces[-1].feed, True))
-    caps = [0.0 if g[4] else mvc(g[1], g[2], g[3], vmax, amax) for g in grid]
+            d1, d2, d3 = p.derivatives3(s)
+            grid.append((p.length / m, d1, d2, d3, p.feed, k == 0 and n in stops))
+    d1, d2, d3 = pieces[-1].derivatives3(pieces[-1].length)
+    grid.append((0.0, d1, d2, d3, pieces[-1].feed, True))
+    caps = [0.0 if g[5] else mvc_jerk(g[1], g[2], g[3], g[4], vmax, amax, jmax) for g in grid]
     caps[0] = 0.0
     u = caps[:]
     u[0] = 0.0
     for k in range(len(grid) - 1):
-        _, hi = sddot_range(grid[k][1], grid[k][2], u[k], amax)
+        _, hi = sddot_range_jerk(grid[k][1], grid[k][2], grid[k][3], u[k], amax, jmax)
         u[k + 1] = min(u[k + 1], max(0.0, u[k] + 2 * grid[k][0] * max(hi, 0.0)))
     for k in range(len(grid) - 2, -1, -1):
-        lo, _ = sddot_range(grid[k + 1][1], grid[k + 1][2], u[k + 1], amax)
+        lo, _ = sddot_range_jerk(grid[k + 1][1], grid[k + 1][2], grid[k + 1][3], u[k + 1], amax, jmax)
         u[k] = min(u[k], max(0.0, u[k + 1] - 2 * grid[k][0] * min(lo, 0.0)))
     t = 0.0
     for k in range(len(grid) - 1):
@@ -167,6 +217,8 @@ def main():
     ap.add_argument("program")
     ap.add_argument("--vmax", type=float, default=100.0)
     ap.add_argument("--amax", type=float, default=500.0)
+    ap.add_argument("--jmax", type=float, default=None,
+                    help="also keep the jerk the path takes at each point (docs/planner.md)")
     ap.add_argument("--kink-rad", type=float, default=1e-3)
     ap.add_argument("--start-points", type=int, default=4000)
     ap.add_argument("--max-points", type=int, default=2_000_000)
@@ -182,7 +234,7 @@ def main():
     refinements = []
     points, previous = args.start_points, None
     while points <= args.max_points:
-        t, n = topp_time(pieces, stops, points, args.vmax, args.amax)
+        t, n = topp_time(pieces, stops, points, args.vmax, args.amax, args.jmax)
         refinements.append([n, t])
         if previous is not None and abs(t - previous) < 1e-4 * t:
             break

@@ -1,5 +1,7 @@
 #include "arc_pieces.hpp"
 
+#include "nckit/plan/segment_limits.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -71,6 +73,36 @@ double top_speed(const DerivativeBounds& b, const MachineConfig& machine, double
     return std::isfinite(v) ? v : 0.0;
 }
 
+//! The highest v >= 0 with d3·v³ + p·v <= room (d3, p >= 0): the one real root of
+//! v³ + P·v − Q = 0 (P = p/d3, Q = room/d3) in a form without cancellation: with
+//! u = cbrt(Q/2 + sqrt(Q²/4 + P³/27)) and w = P/(3u), v = u − w = Q/(u² + u·w + w²).
+double cubic_speed(double d3, double p, double room) {
+    if (!(room > 0)) return 0.0;
+    if (!(d3 > 0)) return p > 0 ? room / p : inf;
+    const double big_p = p / d3;
+    const double big_q = room / d3;
+    const double u = std::cbrt(0.5 * big_q + std::sqrt(0.25 * big_q * big_q + big_p * big_p * big_p / 27.0));
+    const double w = big_p / (3.0 * u);
+    // The last factor keeps rounding on the safe side of the bound.
+    return big_q / (u * u + u * w + w * w) * (1.0 - 1e-12);
+}
+
+//! A jerk-limited piece's speed limit with path acceleration a and jerk j kept: the feed, each
+//! axis's speed, d2·v² + d1·a <= amax and d3·v³ + 3·d2·v·a + d1·j <= jmax.
+double jerk_limited_speed(const DerivativeBounds& b, const MachineConfig& machine, double feed_mm_s, double a,
+                          double j) {
+    double v = feed_mm_s / b.speed_factor;
+    for (const AxisConfig& axis : machine.axes) {
+        const std::size_t i = index(axis.axis);
+        if (b.d1[i] > 0) v = std::min(v, axis.max_velocity / b.d1[i]);
+        if (b.d2[i] > 0) v = std::min(v, std::sqrt(std::max(0.0, axis.max_acceleration - b.d1[i] * a) / b.d2[i]));
+        if (b.d2[i] > 0 || b.d3[i] > 0) {
+            v = std::min(v, cubic_speed(b.d3[i], 3.0 * b.d2[i] * a, axis.max_jerk - b.d1[i] * j));
+        }
+    }
+    return std::isfinite(v) ? v : 0.0;
+}
+
 bool curvature_matters(const PathSegment& arc, const MachineConfig& machine, double feed_mm_s) {
     const DerivativeBounds b = derivative_bounds(arc);
     double v = feed_mm_s / b.speed_factor;
@@ -128,6 +160,58 @@ bool split_arc(const PathSegment& arc, const MachineConfig& machine, double feed
         out[k].limits.max_jerk = inf;
     }
     return true;
+}
+
+bool split_arc_jerk_limited(const PathSegment& arc, const MachineConfig& machine, double feed_mm_s,
+                            std::vector<ArcPiece>& out) {
+    if (arc.shape != SegmentShape::arc || !(arc.length > 0)) return false;
+    const double turns = std::abs(arc.sweep_rad()) / (2.0 * M_PI);
+    const int n = static_cast<int>(std::min<double>(max_arc_pieces, std::ceil(turns * arc_pieces_per_turn)));
+    if (n < 2) return false;
+    // Only where the curvature sets the speed: the whole arc's limits are below the feed and
+    // the axes' speeds (else the arc runs at the feed whole, and keeps more acceleration).
+    const DerivativeBounds whole = derivative_bounds(arc);
+    double cruise = feed_mm_s / whole.speed_factor;
+    for (const AxisConfig& axis : machine.axes) {
+        const std::size_t i = index(axis.axis);
+        if (whole.d1[i] > 0) cruise = std::min(cruise, axis.max_velocity / whole.d1[i]);
+    }
+    const ProfileLimits as_one = segment_limits(arc, machine, feed_mm_s, ProfileKind::scurve);
+    if (!(as_one.max_velocity < cruise * (1.0 - 1e-9))) return false;
+    // One path acceleration and jerk for the whole arc, so that its pieces share S-curve runs:
+    // jerk_limited_jerk_share of each axis's jerk for j, and for a jerk_limited_acceleration_share
+    // of its acceleration, at most what leaves jerk_limited_coupling_share of its jerk to the
+    // coupling term 3·d2·v·a at the speed the curvature alone allows (sqrt(amax/d2)).
+    double a = inf;
+    double j = inf;
+    for (const AxisConfig& axis : machine.axes) {
+        const std::size_t i = index(axis.axis);
+        if (whole.d1[i] > 0) {
+            a = std::min(a, jerk_limited_acceleration_share * axis.max_acceleration / whole.d1[i]);
+            j = std::min(j, jerk_limited_jerk_share * axis.max_jerk / whole.d1[i]);
+        }
+        if (whole.d2[i] > 0) {
+            const double turning_speed = std::min(cruise, std::sqrt(axis.max_acceleration / whole.d2[i]));
+            a = std::min(a, jerk_limited_coupling_share * axis.max_jerk / (3.0 * whole.d2[i] * turning_speed));
+        }
+    }
+    if (!std::isfinite(a) || !std::isfinite(j)) return false;
+    const double piece_length = arc.length / n;
+    out.resize(static_cast<std::size_t>(n));
+    double fastest = 0;
+    for (int k = 0; k < n; ++k) {
+        ArcPiece& piece = out[static_cast<std::size_t>(k)];
+        const double start = k * piece_length;
+        piece.path = trim_start(arc, start);
+        piece.path.length = k + 1 == n ? arc.length - start : piece_length;
+        const DerivativeBounds b = derivative_bounds(piece.path);
+        piece.limits.max_velocity = jerk_limited_speed(b, machine, feed_mm_s, a, j);
+        piece.limits.max_acceleration = a;
+        piece.limits.max_jerk = j;
+        fastest = std::max(fastest, piece.limits.max_velocity);
+    }
+    // Pieces slower than the whole arc everywhere (a short arc, a tight jerk budget): keep it whole.
+    return fastest > as_one.max_velocity;
 }
 
 }  // namespace nckit::plan_detail

@@ -31,4 +31,21 @@ inline constexpr int max_arc_pieces = 1024;
 [[nodiscard]] bool split_arc(const PathSegment& arc, const MachineConfig& machine, double feed_mm_s,
                              bool starts_at_rest, bool ends_at_rest, std::vector<ArcPiece>& out);
 
+//! What every piece of a jerk-limited arc keeps for the path's own acceleration and jerk (the
+//! same on all pieces of an arc): shares of each axis's limits, chosen by measurement on the
+//! planner benchmark programs (docs/planner.md, "Speed along an arc (S-curve)").
+inline constexpr double jerk_limited_acceleration_share = 0.5;
+inline constexpr double jerk_limited_jerk_share = 0.5;
+//! At most this share of an axis's jerk goes to the coupling term 3·d2·v·a.
+inline constexpr double jerk_limited_coupling_share = 0.8;
+
+//! S-curve plans only. Cuts `arc` into pieces as split_arc does, when the limits of the whole
+//! arc (segment_limits) keep it below its feed. Every piece gets the same path acceleration a and jerk j (shares of the
+//! axes', so that neighbouring pieces share one S-curve run in the look-ahead) and the highest
+//! speed v that its own derivative bounds allow with them:
+//! d1·v <= vmax, d2·v² + d1·a <= amax and d3·v³ + 3·d2·v·a + d1·j <= jmax on every axis.
+//! Returns false when the arc is better left whole (out is then not to be used).
+[[nodiscard]] bool split_arc_jerk_limited(const PathSegment& arc, const MachineConfig& machine, double feed_mm_s,
+                                          std::vector<ArcPiece>& out);
+
 }  // namespace nckit::plan_detail

@@ -91,8 +91,8 @@ struct Planner::Impl {
     }
 
     //! The pending motion goes to the window, ending at rest when `stop`, else at most at its own
-    //! speed limit (the next segment's lowers it further). A trapezoid arc whose curvature sets
-    //! its speed goes as pieces with limits of their own (arc_pieces.hpp).
+    //! speed limit (the next segment's lowers it further). An arc whose curvature sets its speed
+    //! goes as pieces with limits of their own (arc_pieces.hpp).
     void release_pending(bool stop) {
         if (!pending) return;
         Pending& p = *pending;
@@ -106,8 +106,9 @@ struct Planner::Impl {
         }
         if (!(p.path.length > min_trimmed_length)) {
             for (WindowEvent& e : pending_events) lookahead.add_event(std::move(e), position);
-        } else if (kind == ProfileKind::trapezoid &&
-                   plan_detail::split_arc(p.path, machine, p.feed_mm_s, at_rest, stop, arc_pieces)) {
+        } else if (kind == ProfileKind::trapezoid
+                       ? plan_detail::split_arc(p.path, machine, p.feed_mm_s, at_rest, stop, arc_pieces)
+                       : plan_detail::split_arc_jerk_limited(p.path, machine, p.feed_mm_s, arc_pieces)) {
             for (std::size_t k = 0; k < arc_pieces.size(); ++k) {
                 const bool last = k + 1 == arc_pieces.size();
                 const ProfileLimits& limits = arc_pieces[k].limits;

@@ -146,14 +146,17 @@ TEST(Planner, TangentLineArcPassesAtSpeedAndCornerStops) {
     }
 }
 
-TEST(Planner, ArcSpeedKeepsNormalAccelerationWithinHalfTheLimit) {
+TEST(Planner, ArcSpeedKeepsNormalAccelerationWithinTheLimit) {
     MachineConfig m = plan_test::test_machine();
     MoveBuilder b;
     b.position = xyz(1, 0);
     b.arc(xyz(1, 0), xyz(0, 0), ArcDirection::counterclockwise, 6000);  // full circle r = 1
     const Planned p = plan_and_check(b, m);
-    // v²/r <= a/2 gives sqrt(250) mm/s, the jerk share v³/r² <= j/3 gives 25.5 mm/s.
-    EXPECT_NEAR(p.stats.max_xyz_speed, std::sqrt(250.0), 1e-6);
+    // In pieces, the speed follows the pointwise limit (docs/planner.md, "Speed along an arc
+    // (S-curve)"): above the whole-arc speed with half of a for the turning (v²/r <= a/2:
+    // sqrt(250) mm/s), below where one axis takes all of a (v²/r <= a: sqrt(500) mm/s).
+    EXPECT_GT(p.stats.max_xyz_speed, 1.2 * std::sqrt(250.0));
+    EXPECT_LE(p.stats.max_xyz_speed, std::sqrt(500.0));
 }
 
 TEST(Planner, WaitingMcodesStopOthersPassAtSpeed) {
