@@ -136,6 +136,8 @@ int NckitInterp::start_run() {
     running_ = &*interpreter_;
     moves_taken_ = 0;
     messages_.clear();
+    reset_start_line();
+    skipped_.emplace(*machine_, interpreter_->modal_view());
     return INTERP_OK;
 }
 
@@ -156,6 +158,7 @@ int NckitInterp::close() {
     call_level_ = 0;
     move_file_.clear();
     messages_.clear();
+    reset_start_line();
     return INTERP_OK;
 }
 
@@ -191,45 +194,95 @@ int NckitInterp::read() {
         if (program_path_.empty()) return static_cast<int>(INTERP_FILE_NOT_OPEN);
         if (program_error_) return fail_with(*program_error_);
         if (ended_) return static_cast<int>(INTERP_ENDFILE);
-        if (pending_ || pending_end_) return static_cast<int>(INTERP_OK);  // read twice: same block
+        // The synch asked for never came: task dropped it with the block's calls (run from line).
+        if (synch_owed_) {
+            synch_owed_ = false;
+            run_mode_ = RunMode::skipping;
+        }
+        if (probe_read_ || pending_ || pending_end_) return static_cast<int>(INTERP_OK);  // read twice: same block
         if (!interpreter_) {
             if (int status = start_run(); status != INTERP_OK) return status;
+            if (hosted_by_task()) {
+                // The probe: a block of line 0 that makes no call but asks task to synch after it.
+                probe_read_ = true;
+                run_mode_ = RunMode::probing;
+                line_ = 0;
+                call_level_ = 0;
+                return static_cast<int>(INTERP_OK);
+            }
         }
         running_ = &*interpreter_;
-        InterpResult result = interpreter_->next();
-        view_ = interpreter_->modal_view();
-        if (auto* move = std::get_if<Move>(&result)) {
-            // LinuxCNC's spindle-synchronised motion always starts at the index pulse: a thread
-            // start past it (Q, a multi-start thread) would be cut on top of the first start.
-            if (const auto* sync = std::get_if<SyncMove>(&move->what); sync != nullptr && sync->start_angle_deg != 0) {
-                program_error_ = error_at(move->where, "sync-start-angle",
-                                          fmt::format("a thread starting {} deg past the spindle index (Q): LinuxCNC "
-                                                      "starts every synchronised move at the index; shift the start "
-                                                      "along Z by a fraction of the lead instead",
-                                                      sync->start_angle_deg));
+        if (!held_) {
+            InterpResult result = interpreter_->next();
+            if (auto* move = std::get_if<Move>(&result)) {
+                // LinuxCNC's spindle-synchronised motion always starts at the index pulse: a
+                // thread start past it (Q, a multi-start thread) would be cut on top of the first.
+                if (const auto* sync = std::get_if<SyncMove>(&move->what);
+                    sync != nullptr && sync->start_angle_deg != 0) {
+                    program_error_ =
+                        error_at(move->where, "sync-start-angle",
+                                 fmt::format("a thread starting {} deg past the spindle index (Q): LinuxCNC "
+                                             "starts every synchronised move at the index; shift the start "
+                                             "along Z by a fraction of the lead instead",
+                                             sync->start_angle_deg));
+                    return fail_with(*program_error_);
+                }
+                held_view_ = interpreter_->modal_view();
+                held_depth_ = interpreter_->call_depth();
+                held_main_line_ = main_line_of(*move);
+                held_ = std::move(*move);
+            } else if (std::holds_alternative<ProgramEnd>(result)) {
+                view_ = interpreter_->modal_view();
+                if (run_mode_ == RunMode::skipping) {
+                    program_error_ =
+                        error_at(make_location(std::make_shared<const std::string>(program_path_), main_line_, 1),
+                                 "start-line-not-reached",
+                                 "run from line: the program ended before task reached the start line in the main "
+                                 "program; start at a line of the main program that the run passes (not in a called "
+                                 "program, a subroutine definition or after the program end)");
+                    return fail_with(*program_error_);
+                }
+                pending_end_ = true;
+                return static_cast<int>(INTERP_OK);
+            } else {
+                view_ = interpreter_->modal_view();
+                program_error_ = std::get<Diagnostic>(result);
                 return fail_with(*program_error_);
             }
-            note_move(*move, *interpreter_);
-            pending_ordinal_ = moves_taken_++;
-            pending_ = std::move(*move);
-            return static_cast<int>(INTERP_OK);
         }
-        if (std::holds_alternative<ProgramEnd>(result)) {
-            pending_end_ = true;
-            return static_cast<int>(INTERP_OK);
-        }
-        program_error_ = std::get<Diagnostic>(result);
-        return fail_with(*program_error_);
+        if (!step_line()) deliver_held();
+        return static_cast<int>(INTERP_OK);
     });
 }
 
 int NckitInterp::execute() {
     return guarded(error_, [&] {
+        if (probe_read_) {
+            probe_read_ = false;
+            synch_owed_ = true;
+            return static_cast<int>(INTERP_EXECUTE_FINISH);
+        }
         if (pending_) {
+            if (skip_pending()) return static_cast<int>(INTERP_OK);
+            bool tool_changed = false;
+            if (run_mode_ == RunMode::finishing_line) {
+                run_mode_ = RunMode::normal;
+                Result<bool> restored = restore_before(*pending_);
+                if (!restored) {
+                    program_error_ = restored.diagnostics().front();
+                    pending_.reset();
+                    return fail_with(*program_error_);
+                }
+                tool_changed = *restored;
+            }
             issue_messages(pending_ordinal_);
             AfterMove after = canon_->emit(*pending_, view_);
             pending_.reset();
-            return static_cast<int>(after == AfterMove::wait_for_motion ? INTERP_EXECUTE_FINISH : INTERP_OK);
+            if (after == AfterMove::wait_for_motion || tool_changed) {
+                synch_owed_ = hosted_by_task();
+                return static_cast<int>(INTERP_EXECUTE_FINISH);
+            }
+            return static_cast<int>(INTERP_OK);
         }
         if (pending_end_) {
             issue_messages(std::nullopt);
