@@ -115,6 +115,8 @@ std::vector<ApproachStep> approach_steps(const RestartApproach& a, const Machine
         line.to = to;
         line.rapid = rapid;
         line.feed.mm_per_min = a.feed_mm_min;
+        // Each step ends at rest: the retract is complete before the other axes move.
+        line.path.exact_stop = true;
         steps.push_back(ApproachStep{line, retract_only});
         at = to;
     };

@@ -264,21 +264,18 @@ int NckitInterp::execute() {
         }
         if (pending_) {
             if (skip_pending()) return static_cast<int>(INTERP_OK);
-            bool tool_changed = false;
             if (run_mode_ == RunMode::finishing_line) {
                 run_mode_ = RunMode::normal;
-                Result<bool> restored = restore_before(*pending_);
-                if (!restored) {
-                    program_error_ = restored.diagnostics().front();
+                if (auto refused = restore_before(*pending_)) {
+                    program_error_ = std::move(*refused);
                     pending_.reset();
                     return fail_with(*program_error_);
                 }
-                tool_changed = *restored;
             }
             issue_messages(pending_ordinal_);
             AfterMove after = canon_->emit(*pending_, view_);
             pending_.reset();
-            if (after == AfterMove::wait_for_motion || tool_changed) {
+            if (after == AfterMove::wait_for_motion) {
                 synch_owed_ = hosted_by_task();
                 return static_cast<int>(INTERP_EXECUTE_FINISH);
             }

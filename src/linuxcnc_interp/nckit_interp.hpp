@@ -87,9 +87,11 @@ private:
     void deliver_held();
     //! A move task would drop, or the rest of the line before the start line: folded, not issued.
     [[nodiscard]] bool skip_pending();
-    //! The state the skipped blocks left, issued before `target`; true when a tool change was
-    //! issued (task then waits for it). An error when `target` cannot be a start.
-    Result<bool> restore_before(const Move& target);
+    //! The state the skipped blocks left, issued before `target`; an error when `target` cannot
+    //! be a start. No INTERP_EXECUTE_FINISH for its tool change: task's synch would drop the
+    //! motion canon still holds for merging (GET_EXTERNAL_POSITION drops unflushed segments); the
+    //! tool load runs before the motions queued after it all the same.
+    [[nodiscard]] std::optional<Diagnostic> restore_before(const Move& target);
     void reset_start_line();
     //! The line of the main program a move belongs to: its own at call level 0, the calling
     //! block's inside a called program.

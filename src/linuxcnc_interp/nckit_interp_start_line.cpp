@@ -85,8 +85,8 @@ bool NckitInterp::skip_pending() {
     return true;
 }
 
-Result<bool> NckitInterp::restore_before(const Move& target) {
-    if (auto refused = skipped_->refuse(target, view_)) return std::move(*refused);
+std::optional<Diagnostic> NckitInterp::restore_before(const Move& target) {
+    if (auto refused = skipped_->refuse(target, view_)) return refused;
     // LinuxCNC got none of the skipped blocks' calls: a fresh output sends every mode again
     // (units, offsets, plane, feed mode and rate, path mode) with the first call.
     canon_.emplace(*machine_, settings_.g64_tolerance_mm, settings_.exact_path, settings_.line_comments);
@@ -97,10 +97,9 @@ Result<bool> NckitInterp::restore_before(const Move& target) {
         event.what = Io{kind, number, value, io.constant_surface_speed, io.rpm_clamp};
         return canon_->emit(event, view_);
     };
-    bool tool_changed = false;
     if (io.tool_in_spindle > 0 && GET_EXTERNAL_TOOL_TABLE(0).toolno != io.tool_in_spindle) {
         issue(IoKind::tool_select, io.tool_in_spindle);
-        tool_changed = issue(IoKind::mcode, 6) == AfterMove::wait_for_motion;
+        issue(IoKind::mcode, 6);
     }
     if (io.tool_selected > 0 && io.tool_selected != io.tool_in_spindle) issue(IoKind::tool_select, io.tool_selected);
     if (io.speed_set) issue(IoKind::spindle_speed, 0, io.speed);
@@ -126,7 +125,7 @@ Result<bool> NckitInterp::restore_before(const Move& target) {
             }
         }
     }
-    return tool_changed;
+    return std::nullopt;
 }
 
 }  // namespace nckit::lcnc
