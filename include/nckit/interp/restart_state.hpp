@@ -53,7 +53,8 @@ struct ApproachStep {
 
 //! The approach from `from` (machine coordinates): retract to the safe height, rapid over the
 //! point less the take-up on the side the path came from, rapid over the point, rapid down to
-//! the clearance, feed onto the point. `nckit restart` writes these as blocks.
+//! the clearance, feed onto the point; each step ends at rest (exact stop). `nckit restart` writes
+//! these as blocks.
 [[nodiscard]] std::vector<ApproachStep> approach_steps(const RestartApproach& a, const MachineConfig& machine,
                                                        const AxisVector& from);
 
