@@ -73,6 +73,10 @@ const std::string& Interpreter::current_file() const {
     return state_->ngc ? state_->ngc->current_file() : state_->runner->current_file();
 }
 
+std::uint32_t Interpreter::calling_line() const {
+    return state_->ngc ? state_->ngc->calling_line() : state_->runner->calling_line();
+}
+
 bool Interpreter::append_input(std::string_view text) {
     State& s = *state_;
     if (s.finished && !std::holds_alternative<ProgramEnd>(*s.finished)) return false;

@@ -61,6 +61,10 @@ public:
     //! The file of the program running now (a called one's when in a call).
     [[nodiscard]] const std::string& current_file() const { return *sources_[frames_.size() - 1].file(); }
     void append_main(std::string_view text) { sources_[0].append(text); }
+    //! Inside a call: the line of the main program's block that made the outermost call; 0 else.
+    [[nodiscard]] std::uint32_t calling_line() const {
+        return frames_.size() > 1 && frames_[1].return_line > 0 ? frames_[1].return_line - 1 : 0;
+    }
     void set_position(const AxisVector& machine) { executor_.set_position(machine); }
     [[nodiscard]] std::uint64_t retained_writes() const { return variables_.retained_writes(); }
     [[nodiscard]] std::vector<RetainedVariable> retained_values() const;

@@ -23,47 +23,6 @@ using namespace restart_detail;
 
 namespace {
 
-constexpr double takeup_mm = 1.0;     // more than any backlash a machine file may hold today
-constexpr double clearance_mm = 2.0;  // the last stretch onto the point is fed, not rapid
-
-const AxisVector* end_of(const Move& move) {
-    if (const auto* line = std::get_if<Line>(&move.what)) return &line->to;
-    if (const auto* arc = std::get_if<Arc>(&move.what)) return &arc->to;
-    if (const auto* sync = std::get_if<SyncMove>(&move.what)) return &sync->to;
-    return nullptr;
-}
-
-const AxisVector* start_of(const Move& move) {
-    if (const auto* line = std::get_if<Line>(&move.what)) return &line->from;
-    if (const auto* arc = std::get_if<Arc>(&move.what)) return &arc->from;
-    if (const auto* sync = std::get_if<SyncMove>(&move.what)) return &sync->from;
-    return nullptr;
-}
-
-//! The side each axis was moving to when the move ended: for an arc the tangent at its end.
-void note_directions(const Move& move, std::array<int, axis_count>& side) {
-    const AxisVector* from = start_of(move);
-    const AxisVector* to = end_of(move);
-    if (from == nullptr) return;
-    AxisVector direction;
-    for (std::size_t i = 0; i < axis_count; ++i) direction.value[i] = to->value[i] - from->value[i];
-    if (const auto* arc = std::get_if<Arc>(&move.what)) {
-        PlaneAxes p = plane_axes(arc->plane);
-        const double u = arc->to[p.first] - arc->center[p.first];
-        const double v = arc->to[p.second] - arc->center[p.second];
-        const double turn = arc->direction == ArcDirection::counterclockwise ? 1.0 : -1.0;
-        direction[p.first] = -v * turn;
-        direction[p.second] = u * turn;
-        // At an extreme of the circle an axis's tangent is zero: it arrived moving outwards.
-        const double radius = std::hypot(u, v);
-        if (std::abs(direction[p.first]) <= 1e-9 * radius) direction[p.first] = u;
-        if (std::abs(direction[p.second]) <= 1e-9 * radius) direction[p.second] = v;
-    }
-    for (std::size_t i = 0; i < axis_count; ++i) {
-        if (std::abs(direction.value[i]) > 1e-12) side[i] = direction.value[i] > 0 ? 1 : -1;
-    }
-}
-
 std::uint32_t line_count(const std::string& text) {
     return static_cast<std::uint32_t>(std::count(text.begin(), text.end(), '\n'));
 }
@@ -108,13 +67,9 @@ Result<RestartReport> write_restart(Interpreter& interpreter, const RestartTarge
     const MachineConfig& machine = interpreter.machine();
     const int decimals = settings.decimals;
     RestartReport report;
-    report.state = interpreter.modal_view();
-    std::array<int, axis_count> side{};
-    std::optional<AxisVector> position;  // where the last motion before the target ended
+    RestartState before(machine, interpreter.modal_view());
     BlockCounter blocks;
     std::int64_t hits = 0, records = 0;
-    bool previous_comp = false;
-    std::optional<Move> thread_start;  // first move of the run of G32/G33 moves just made
     const std::string* main_file = nullptr;
     std::optional<Move> first;  // the target's first move
     // #500-#999 as the last block before the target left them (read when they were written).
@@ -142,21 +97,7 @@ Result<RestartReport> write_restart(Interpreter& interpreter, const RestartTarge
                     break;
             }
             if (hit) {
-                if (view.cutter_compensation && previous_comp) {
-                    return error_at(
-                        move.where, "restart-cutter-comp",
-                        "the block lies inside cutter compensation (G41/G42): its start depends on the "
-                        "blocks before it; restart at the block that switches compensation on or after G40");
-                }
-                if (std::holds_alternative<SyncMove>(move.what) && thread_start) {
-                    return error_at(move.where, "restart-mid-thread",
-                                    fmt::format("the block is in the middle of a thread pass; restart at the pass's "
-                                                "start, {}{}",
-                                                location_text(thread_start->where),
-                                                thread_start->sequence_number >= 0
-                                                    ? fmt::format(" (N{})", thread_start->sequence_number)
-                                                    : std::string()));
-                }
+                if (auto refused = before.refuse(move, view)) return std::move(*refused);
                 report.where = move.where;
                 report.sequence_number = move.sequence_number;
                 report.block = blocks.count();
@@ -170,18 +111,7 @@ Result<RestartReport> write_restart(Interpreter& interpreter, const RestartTarge
             retained = interpreter.retained_values();
         }
         ++records;
-        report.state = view;
-        previous_comp = view.cutter_compensation;
-        if (const auto* io = std::get_if<Io>(&move.what)) note_io(*io, machine, report.io);
-        if (const AxisVector* end = end_of(move)) {
-            position = *end;
-            note_directions(move, side);
-            if (std::holds_alternative<SyncMove>(move.what)) {
-                if (!thread_start) thread_start = move;
-            } else {
-                thread_start.reset();
-            }
-        }
+        before.note(move, view);
     }
     if (!first) {
         const char* what = target.kind == RestartTarget::Kind::block  ? "block"
@@ -197,6 +127,8 @@ Result<RestartReport> write_restart(Interpreter& interpreter, const RestartTarge
     }
     // The block before the target left `retained` (its values once all moves before the target
     // were made); a journal's values must be the same, or the program or its inputs changed.
+    report.state = before.modes();
+    report.io = before.io();
     report.retained = retained;
     if (settings.retained_at_target && *settings.retained_at_target != retained) {
         return error_at(report.where, "restart-journal-mismatch",
@@ -217,18 +149,8 @@ Result<RestartReport> write_restart(Interpreter& interpreter, const RestartTarge
         }
         if (!preamble_written) {
             preamble_written = true;
+            report.approach = before.approach(*pending);
             RestartApproach& a = report.approach;
-            a.retract_axis = retract_axis_of(machine);
-            if (const AxisConfig* axis = machine.find(a.retract_axis)) a.safe_mm = axis->max;
-            if (machine.restart_safe_mm) a.safe_mm = *machine.restart_safe_mm;
-            // Moves are continuous: the target starts where the last motion before it ended.
-            const AxisVector* start = start_of(*pending);
-            a.moves = position.has_value() || start != nullptr;
-            a.point = position ? *position : start != nullptr ? *start : AxisVector{};
-            a.side = side;
-            a.takeup_mm = takeup_mm;
-            a.clearance_mm = clearance_mm;
-            a.feed_mm_min = machine.restart_feed_mm_min;
             fmt::format_to(std::back_inserter(out), "( {} restarted by nckit at {}{}, block {} )\n",
                            std::filesystem::path(source_name).filename().string(), location_text(report.where),
                            report.sequence_number >= 0 ? fmt::format(" N{}", report.sequence_number) : std::string(),

@@ -131,32 +131,24 @@ Axis retract_axis_of(const MachineConfig& machine) {
 
 void approach_blocks(std::string& out, RestartApproach& a, const MachineConfig& machine, int decimals, double& worst) {
     const Axis r = a.retract_axis;
-    const double away = a.safe_mm >= a.point[r] ? 1.0 : -1.0;
     out += "( approach: retract, rapid over the restart point from the side the path came, feed onto it )\n";
-    out += feed_mode_code(FeedMode::per_minute, machine);
-    out += " G64 G0";
-    axis_word(out, r, a.safe_mm, decimals, worst);
-    out += '\n';
-    std::string before = "G0";
-    std::string over = "G0";
-    for (const AxisConfig& axis : machine.axes) {
-        if (axis.axis == r) continue;
-        const int side = a.side[index(axis.axis)];
-        axis_word(before, axis.axis, a.point[axis.axis] - side * a.takeup_mm, decimals, worst);
-        axis_word(over, axis.axis, a.point[axis.axis], decimals, worst);
+    bool first = true;
+    // Only the end points of the steps are written: where they start does not show.
+    for (const ApproachStep& step : approach_steps(a, machine, a.point)) {
+        std::string block = first ? std::string(feed_mode_code(FeedMode::per_minute, machine)) + " G64 G0"
+                                  : std::string(step.line.rapid ? "G0" : "G1");
+        first = false;
+        for (const AxisConfig& axis : machine.axes) {
+            if ((axis.axis == r) == step.retract_axis_only) {
+                axis_word(block, axis.axis, step.line.to[axis.axis], decimals, worst);
+            }
+        }
+        if (!step.line.rapid) {
+            block += " F";
+            append_exact(block, a.feed_mm_min);
+        }
+        out += block + '\n';
     }
-    if (before != "G0") out += before + '\n' + over + '\n';
-    const double near = a.point[r] + away * a.clearance_mm;
-    if (away * (a.safe_mm - near) > 0) {
-        out += "G0";
-        axis_word(out, r, near, decimals, worst);
-        out += '\n';
-    }
-    out += "G1";
-    axis_word(out, r, a.point[r], decimals, worst);
-    out += " F";
-    append_exact(out, a.feed_mm_min);
-    out += '\n';
 }
 
 bool frame_can_be_set(const ModalView& s) {

@@ -145,6 +145,8 @@ int NckitInterp::start_run() {
     running_ = &*interpreter_;
     moves_taken_ = 0;
     messages_.clear();
+    reset_start_line();
+    skipped_.emplace(*machine_, interpreter_->modal_view());
     return INTERP_OK;
 }
 
@@ -166,6 +168,7 @@ int NckitInterp::close() {
     call_level_ = 0;
     move_file_.clear();
     messages_.clear();
+    reset_start_line();
     return INTERP_OK;
 }
 
@@ -201,47 +204,93 @@ int NckitInterp::read() {
         if (program_path_.empty()) return static_cast<int>(INTERP_FILE_NOT_OPEN);
         if (program_error_) return fail_with(*program_error_);
         if (ended_) return static_cast<int>(INTERP_ENDFILE);
-        if (pending_ || pending_end_) return static_cast<int>(INTERP_OK);  // read twice: same block
+        // The synch asked for never came: task dropped it with the block's calls (run from line).
+        if (synch_owed_) {
+            synch_owed_ = false;
+            run_mode_ = RunMode::skipping;
+        }
+        if (probe_read_ || pending_ || pending_end_) return static_cast<int>(INTERP_OK);  // read twice: same block
         if (!interpreter_) {
             if (int status = start_run(); status != INTERP_OK) return status;
+            if (hosted_by_task()) {
+                // The probe: a block of line 0 that makes no call but asks task to synch after it.
+                probe_read_ = true;
+                run_mode_ = RunMode::probing;
+                line_ = 0;
+                call_level_ = 0;
+                return static_cast<int>(INTERP_OK);
+            }
         }
         running_ = &*interpreter_;
-        InterpResult result = interpreter_->next();
-        view_ = interpreter_->modal_view();
-        if (auto* move = std::get_if<Move>(&result)) {
-            // LinuxCNC's spindle-synchronised motion always starts at the index pulse: a thread
-            // start past it (Q, a multi-start thread) would be cut on top of the first start.
-            if (const auto* sync = std::get_if<SyncMove>(&move->what); sync != nullptr && sync->start_angle_deg != 0) {
-                program_error_ = error_at(move->where, "sync-start-angle",
-                                          fmt::format("a thread starting {} deg past the spindle index (Q): LinuxCNC "
-                                                      "starts every synchronised move at the index; shift the start "
-                                                      "along Z by a fraction of the lead instead",
-                                                      sync->start_angle_deg));
+        if (!held_) {
+            InterpResult result = interpreter_->next();
+            if (auto* move = std::get_if<Move>(&result)) {
+                // LinuxCNC's spindle-synchronised motion always starts at the index pulse: a
+                // thread start past it (Q, a multi-start thread) would be cut on top of the first.
+                if (const auto* sync = std::get_if<SyncMove>(&move->what);
+                    sync != nullptr && sync->start_angle_deg != 0) {
+                    program_error_ =
+                        error_at(move->where, "sync-start-angle",
+                                 fmt::format("a thread starting {} deg past the spindle index (Q): LinuxCNC "
+                                             "starts every synchronised move at the index; shift the start "
+                                             "along Z by a fraction of the lead instead",
+                                             sync->start_angle_deg));
+                    return fail_with(*program_error_);
+                }
+                held_view_ = interpreter_->modal_view();
+                held_depth_ = interpreter_->call_depth();
+                held_main_line_ = main_line_of(*move);
+                held_ = std::move(*move);
+            } else if (std::holds_alternative<ProgramEnd>(result)) {
+                view_ = interpreter_->modal_view();
+                if (run_mode_ == RunMode::skipping) {
+                    program_error_ =
+                        error_at(make_location(std::make_shared<const std::string>(program_path_), main_line_, 1),
+                                 "start-line-not-reached",
+                                 "run from line: the program ended before task reached the start line in the main "
+                                 "program; start at a line of the main program that the run passes (not in a called "
+                                 "program, a subroutine definition or after the program end)");
+                    return fail_with(*program_error_);
+                }
+                pending_end_ = true;
+                return static_cast<int>(INTERP_OK);
+            } else {
+                view_ = interpreter_->modal_view();
+                program_error_ = std::get<Diagnostic>(result);
                 return fail_with(*program_error_);
             }
-            note_move(*move, *interpreter_);
-            if (journal_) journal_->on_move(*interpreter_, *move);
-            pending_ordinal_ = moves_taken_++;
-            pending_ = std::move(*move);
-            return static_cast<int>(INTERP_OK);
         }
-        if (std::holds_alternative<ProgramEnd>(result)) {
-            pending_end_ = true;
-            return static_cast<int>(INTERP_OK);
-        }
-        program_error_ = std::get<Diagnostic>(result);
-        return fail_with(*program_error_);
+        if (!step_line()) deliver_held();
+        return static_cast<int>(INTERP_OK);
     });
 }
 
 int NckitInterp::execute() {
     return guarded(error_, [&] {
+        if (probe_read_) {
+            probe_read_ = false;
+            synch_owed_ = true;
+            return static_cast<int>(INTERP_EXECUTE_FINISH);
+        }
         if (pending_) {
+            if (skip_pending()) return static_cast<int>(INTERP_OK);
+            if (run_mode_ == RunMode::finishing_line) {
+                run_mode_ = RunMode::normal;
+                if (auto refused = restore_before(*pending_)) {
+                    program_error_ = std::move(*refused);
+                    pending_.reset();
+                    return fail_with(*program_error_);
+                }
+            }
             issue_messages(pending_ordinal_);
             if (journal_) journal_->on_reached(pending_->where);
             AfterMove after = canon_->emit(*pending_, view_);
             pending_.reset();
-            return static_cast<int>(after == AfterMove::wait_for_motion ? INTERP_EXECUTE_FINISH : INTERP_OK);
+            if (after == AfterMove::wait_for_motion) {
+                synch_owed_ = hosted_by_task();
+                return static_cast<int>(INTERP_EXECUTE_FINISH);
+            }
+            return static_cast<int>(INTERP_OK);
         }
         if (pending_end_) {
             issue_messages(std::nullopt);
@@ -319,63 +368,6 @@ int NckitInterp::line() {
 int NckitInterp::call_level() {
     return call_level_;
 }
-
-void NckitInterp::active_g_codes(int g[ACTIVE_G_CODES]) {
-    const ModalView& v = view_;
-    g[0] = sequence_;
-    g[1] = v.motion_code;
-    g[2] = -1;
-    g[3] = v.plane == Plane::xy ? 170 : v.plane == Plane::zx ? 180 : 190;
-    g[4] = 400;
-    g[5] = v.length_factor_mm != 1.0 ? 200 : 210;
-    g[6] = v.incremental ? 910 : 900;
-    g[7] = v.feed_mode == FeedMode::per_revolution ? 950 : 940;
-    g[8] = 540 + 10 * static_cast<int>(v.work_system);
-    g[9] = 490;
-    g[10] = 980;
-    g[11] = v.path.exact_stop ? 611 : 640;
-    g[12] = -1;
-    g[13] = v.constant_surface_speed ? 960 : 970;
-    g[14] = 911;
-    g[15] = v.diameter_mode ? 70 : 80;
-    g[16] = -1;
-}
-
-void NckitInterp::active_m_codes(int m[ACTIVE_M_CODES]) {
-    int direction = canon_ ? canon_->spindle_direction() : 0;
-    bool mist = canon_ && canon_->mist();
-    bool flood = canon_ && canon_->flood();
-    m[0] = sequence_;
-    m[1] = -1;
-    m[2] = direction > 0 ? 3 : direction < 0 ? 4 : 5;
-    m[3] = -1;
-    m[4] = mist ? 7 : flood ? -1 : 9;
-    m[5] = flood ? 8 : -1;
-    m[6] = 48;
-    for (int i = 7; i < ACTIVE_M_CODES; ++i) m[i] = -1;
-}
-
-void NckitInterp::active_settings(double s[ACTIVE_SETTINGS]) {
-    const ModalView& v = view_;
-    s[0] = sequence_;
-    s[1] = v.feed / v.length_factor_mm;
-    s[2] = v.constant_surface_speed ? v.surface_speed_m_min : v.spindle_rpm;
-    s[3] = v.path.tolerance_mm / v.length_factor_mm;
-    s[4] = s[3];
-}
-
-// The state tags of LinuxCNC's own interpreter (modes carried with each motion): none here, so
-// LinuxCNC shows the modes of the block last read, as it does outside AUTO mode.
-int NckitInterp::active_modes(int[ACTIVE_G_CODES], int[ACTIVE_M_CODES], double[ACTIVE_SETTINGS], StateTag const&) {
-    return INTERP_ERROR;
-}
-int NckitInterp::restore_from_tag(StateTag const&) {
-    return INTERP_OK;
-}
-void NckitInterp::print_state_tag(StateTag const&) {}
-void NckitInterp::set_loglevel(int) {}
-// nckit's main program always restarts at M99, as a Fanuc control's does.
-void NckitInterp::set_loop_on_main_m99(bool) {}
 
 }  // namespace nckit::lcnc
 

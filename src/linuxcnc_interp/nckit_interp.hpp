@@ -15,6 +15,7 @@
 #include "linuxcnc_headers.hpp"
 #include "nckit/interp/interpreter.hpp"
 #include "nckit/interp/run_journal.hpp"
+#include "nckit/interp/restart_state.hpp"
 #include "plugin_settings.hpp"
 
 namespace nckit::lcnc {
@@ -63,6 +64,56 @@ private:
     int run_mdi(const char* command);    //!< one MDI block, all its calls issued
     //! The move just taken from `interpreter`: where it comes from (line, file, call level).
     void note_move(const Move& move, const Interpreter& interpreter);
+
+    // ---- run from line (nckit_interp_start_line.cpp, docs/linuxcnc-plugin.md) ----------------
+    // LinuxCNC's task runs a program from line L by reading and executing every block before L,
+    // dropping the canonical calls they make (motion, spindle, coolant, tool, feed mode...), and
+    // calling synch() after the block whose line() is L - 1 at call level 0. It tells the
+    // interpreter nothing else. The plug-in finds out: the first read() of a run is a probe whose
+    // execute() asks task to wait and synch; task drops that synch with the probe's calls when it
+    // skips, so a read() before the synch means the run is skipping. The skipped moves are not
+    // issued (task would run those of called programs) but folded into a RestartState; at the
+    // start-line synch the rest of line L - 1 is skipped too, and before the first move after it
+    // the state is issued again: tool, spindle, coolant, the approach, all modes.
+    enum class RunMode {
+        normal,          //!< calls go out
+        probing,         //!< the probe asked for a synch; not yet answered
+        skipping,        //!< task drops the calls: the blocks before the start line
+        finishing_line,  //!< synched at the line before the start line: its last moves still skip
+    };
+    //! The next thing read() hands task: a step over a main-program line (task counts lines to
+    //! find the start line; nckit hands out only blocks that move) or the move held.
+    [[nodiscard]] bool step_line();
+    //! The move taken last is handed out as the block read.
+    void deliver_held();
+    //! A move task would drop, or the rest of the line before the start line: folded, not issued.
+    [[nodiscard]] bool skip_pending();
+    //! The state the skipped blocks left, issued before `target`; an error when `target` cannot
+    //! be a start. No INTERP_EXECUTE_FINISH for its tool change: task's synch would drop the
+    //! motion canon still holds for merging (GET_EXTERNAL_POSITION drops unflushed segments); the
+    //! tool load runs before the motions queued after it all the same.
+    [[nodiscard]] std::optional<Diagnostic> restore_before(const Move& target);
+    void reset_start_line();
+    //! The line of the main program a move belongs to: its own at call level 0, the calling
+    //! block's inside a called program.
+    [[nodiscard]] std::uint32_t main_line_of(const Move& move) const;
+
+    //! LinuxCNC's task hosts the plug-in (it synchs after INTERP_EXECUTE_FINISH and runs programs
+    //! from a line); rs274 does neither: no probe there.
+    [[nodiscard]] static bool hosted_by_task();
+
+    RunMode run_mode_ = RunMode::normal;
+    bool probe_read_ = false;      // the probe was read, not yet executed
+    bool synch_owed_ = false;      // execute() asked task to wait and synch; no synch since
+    std::uint32_t main_line_ = 0;  // the main-program line last handed out at call level 0
+    bool call_line_open_ = false;  // moves of a call made on main_line_ were handed out at level > 0
+    std::optional<Move> held_;     // taken from the interpreter, not yet handed out
+    ModalView held_view_;          // its modes
+    int held_depth_ = 0;           // its call depth
+    std::uint32_t held_main_line_ = 0;
+    std::uint32_t pending_main_line_ = 0;
+    std::uint32_t skipped_line_ = 0;  // finishing_line: the line before the start line
+    std::optional<RestartState> skipped_;
 
     std::string ini_path_;
     PluginSettings settings_;

@@ -71,8 +71,9 @@ int NckitInterp::run_mdi(const char* command) {
 }
 
 // LinuxCNC says where the machine stands (after a mode change, a tool change, jogging): MDI
-// commands go on from there. A program run keeps its own path: LinuxCNC synchs mid-run only
-// after a tool change, where the machine stands where the program left it.
+// commands go on from there. A program run keeps its own path: LinuxCNC synchs mid-run after a
+// tool change, where the machine stands where the program left it, and at the start line of a
+// run from line, where the approach starts (nckit_interp_start_line.cpp).
 int NckitInterp::synch() {
     return guarded(error_, [&] {
         if (!machine_) return static_cast<int>(INTERP_OK);
@@ -91,6 +92,15 @@ int NckitInterp::synch() {
         }
         synched_position_ = machine;
         if (mdi_) mdi_->set_position(machine);
+        if (synch_owed_) {
+            // The synch asked for after a block (the probe, a tool change): the calls went out.
+            synch_owed_ = false;
+            if (run_mode_ == RunMode::probing) run_mode_ = RunMode::normal;
+        } else if (run_mode_ == RunMode::skipping) {
+            // Task's start-line synch: the line handed out last is the one before the start line.
+            run_mode_ = RunMode::finishing_line;
+            skipped_line_ = main_line_;
+        }
         return static_cast<int>(INTERP_OK);
     });
 }

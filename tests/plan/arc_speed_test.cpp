@@ -224,7 +224,9 @@ TEST(ArcSpeed, JerkLimitedArcsFollowThePointwiseLimitAndKeepTheLimits) {
         const double ratio = plan.trajectory.duration_s() / trapezoid_s;
         std::printf("j %.0f: S-curve %.4f s, trapezoid %.4f s, ratio %.4f\n", jmax, plan.trajectory.duration_s(),
                     trapezoid_s, ratio);
-        if (jmax == 50000.0) EXPECT_LE(ratio, 1.15);
+        if (jmax == 50000.0) {
+            EXPECT_LE(ratio, 1.15);
+        }
     }
 }
 

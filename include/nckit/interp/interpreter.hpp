@@ -106,6 +106,10 @@ public:
     //! file of the program running then.
     [[nodiscard]] int call_depth() const;
     [[nodiscard]] const std::string& current_file() const;
+    //! Inside a called program: the line of the main program's block that made the outermost
+    //! call in progress (where a run from a main-program line places the called program's
+    //! moves); 0 in the main program.
+    [[nodiscard]] std::uint32_t calling_line() const;
 
     //! MDI: `text` becomes further lines of a program made from a string, and a run that ended
     //! (at the end of its text, M2 or M30) goes on with them, in the modes and with the variables

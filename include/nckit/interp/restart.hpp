@@ -13,6 +13,7 @@
 #include "nckit/core/result.hpp"
 #include "nckit/interp/interpreter.hpp"
 #include "nckit/interp/modal_view.hpp"
+#include "nckit/interp/restart_state.hpp"
 
 namespace nckit {
 
@@ -24,34 +25,6 @@ struct RestartTarget {
     Kind kind = Kind::block;
     std::int64_t number = 1;      //!< N, L or B
     std::int64_t occurrence = 1;  //!< k (sequence and line)
-};
-
-//! The spindle, tool and I/O state the events before the target left, which a restart program
-//! must switch on again before it moves.
-struct RestartIo {
-    int tool_selected = 0;    //!< last T word, 0 for none
-    int tool_in_spindle = 0;  //!< the T last put in by M6, 0 for none
-    bool speed_set = false;   //!< an S word ran
-    double speed = 0;         //!< rpm, or m/min under G96
-    bool constant_surface_speed = false;
-    double rpm_clamp = 0;       //!< G96's clamp (G50 S / D), rpm; 0 = none
-    int spindle_mcode = 5;      //!< 3, 4 or 5
-    double spindle_rpm = 0;     //!< the rpm the M3/M4 event carried
-    bool mist = false;          //!< M7
-    bool flood = false;         //!< M8
-    std::vector<int> laser_on;  //!< laser on-codes in force (the machine's laser_on_mcodes)
-};
-
-//! How the tool comes back: retract, rapid over the point, take up backlash, feed down.
-struct RestartApproach {
-    Axis retract_axis = Axis::Z;
-    double safe_mm = 0;                  //!< retract axis, machine coordinate
-    AxisVector point;                    //!< where the target block starts, machine mm / deg
-    std::array<int, axis_count> side{};  //!< +1 / -1: the direction the original path last moved each axis
-    double takeup_mm = 0;                //!< how far before the point each axis turns
-    double clearance_mm = 0;             //!< the retract axis's rapid stops this far before the point
-    double feed_mm_min = 0;              //!< the last, fed move
-    bool moves = false;                  //!< false when nothing moves from the target on
 };
 
 struct RestartReport {

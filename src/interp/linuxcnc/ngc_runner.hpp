@@ -34,6 +34,10 @@ public:
     //! O-word and M98 calls in progress: 0 in the main program.
     [[nodiscard]] int call_depth() const { return static_cast<int>(frames_.size()) - 1; }
     [[nodiscard]] const std::string& current_file() const { return *current_->file(); }
+    //! Inside a call: the line of the main program's block that made the outermost call; 0 else.
+    [[nodiscard]] std::uint32_t calling_line() const {
+        return frames_.size() > 1 && frames_[1].return_line > 0 ? frames_[1].return_line - 1 : 0;
+    }
     void append_main(std::string_view text) { files_.at(main_file_)->append(text); }
     void set_position(const AxisVector& machine) { executor_.set_position(machine); }
     //! The parameters LinuxCNC keeps in its file (#5161-#5390 and those the file had), now.
