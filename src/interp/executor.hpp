@@ -72,6 +72,8 @@ public:
 private:
     // Checks (executor_checks.cpp): nothing changes state.
     std::optional<Diagnostic> check_words();
+    //! Fanuc dialect: one warning per G code a later code of its group overrode in this block.
+    void warn_overridden_codes() const;
     std::optional<Diagnostic> check_axis_letter(const Word& word) const;
 
     // Cutter radius compensation (executor_cutter_comp.cpp).
