@@ -175,6 +175,8 @@ std::optional<Diagnostic> Executor::set_modes() {
 void Executor::warn_overridden_codes() const {
     if (words_.overridden.empty() || !options_.on_warning) return;
     for (const OverriddenGCode& o : words_.overridden) {
+        const SourceLocation at = block_->at_column(o.column);
+        if (!overrides_warned_.emplace(at.file_name(), at.line, at.column).second) continue;
         const std::string ignored = lathe_code_name(machine_.gcode_system, o.ignored);
         const std::string valid = lathe_code_name(machine_.gcode_system, o.valid);
         // A group-01 code beside a drilling cycle wins whichever comes first (it cancels the

@@ -2,6 +2,9 @@
 // Runs one parsed block against the modal state and appends the moves it makes.
 #include <functional>
 #include <optional>
+#include <set>
+#include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -220,7 +223,10 @@ private:
     std::array<double, 100> macro_outputs_{};  //!< #1100-#1199 as the program wrote them
     std::array<bool, 100> macro_output_set_{};
 
-    double elapsed_s_ = 0;           //!< simulated time, s
+    double elapsed_s_ = 0;  //!< simulated time, s
+    //! Where a gcode-overridden warning was given (file, line, column): a block that runs again
+    //! in a loop or a called program warns once, not on every pass.
+    mutable std::set<std::tuple<std::string, std::uint32_t, std::uint32_t>> overrides_warned_;
     int last_mcode_ = 0;             //!< #4113
     double parts_done_ = 0;          //!< #3901, counted at M2/M30
     double parts_required_ = 0;      //!< #3902

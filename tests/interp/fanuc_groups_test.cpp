@@ -47,6 +47,10 @@ TEST(FanucGroups, EachIgnoredCodeIsAWarningAtItsColumn) {
     EXPECT_TRUE(warnings_of("G0 G17 G40 G49 G80 G90 X1\n").empty());
 }
 
+TEST(FanucGroups, ABlockRunInALoopWarnsOnce) {
+    EXPECT_EQ(warnings_of("#1=0\nWHILE [#1 LT 5] DO1\nG91 G1 X1 G90 F100\n#1=#1+1\nEND1\n").size(), 1u);
+}
+
 TEST(FanucGroups, TwoOneShotCodesStayAnError) {
     EXPECT_EQ(error_where("G28 G92 X0\n"), "modal-conflict 1:5");
     EXPECT_EQ(error_where("G4 P1 G53 X0\n"), "modal-conflict 1:7");
