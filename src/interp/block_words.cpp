@@ -24,6 +24,44 @@ bool m_conflict(int a, int b) {
     return true;
 }
 
+//! Fanuc's group 09: the drilling cycles and G80, which cancels them.
+bool is_group_09(GCode code) {
+    return code == g(80) || is_drilling_cycle(code);
+}
+
+//! Places a group-01 or group-09 code of the Fanuc dialect. In one group the last code written is
+//! valid. A group-01 code (G0 G1 G2 G3 ...) beside a cycle code runs and the cycle code is
+//! ignored (a group-01 code cancels the cycle); beside G80 both count.
+void place_fanuc_motion(BlockWords& out, GWord code) {
+    GWord& slot = out.gcodes[static_cast<std::size_t>(ModalGroup::motion)];
+    if (code.code == g(80)) {
+        if (slot.code >= 0 && is_drilling_cycle(slot.code)) {
+            out.overridden.push_back(OverriddenGCode{slot.code, code.code, slot.column});
+            slot = GWord{};
+        }
+        out.cancels_cycle = true;
+        return;
+    }
+    if (slot.code < 0) {
+        if (is_drilling_cycle(code.code) && out.cancels_cycle) {
+            out.overridden.push_back(OverriddenGCode{g(80), code.code, code.column});
+            out.cancels_cycle = false;
+        }
+        slot = code;
+        return;
+    }
+    const bool same_group = is_group_09(slot.code) == is_group_09(code.code);
+    if (same_group) {
+        out.overridden.push_back(OverriddenGCode{slot.code, code.code, slot.column});
+        slot = code;
+    } else if (is_drilling_cycle(code.code)) {
+        out.overridden.push_back(OverriddenGCode{code.code, slot.code, code.column});
+    } else {
+        out.overridden.push_back(OverriddenGCode{slot.code, code.code, slot.column});
+        slot = code;
+    }
+}
+
 }  // namespace
 
 MGroup m_group_of(int code) {
@@ -159,8 +197,9 @@ bool is_code_number(double value) {
 }
 }  // namespace
 
-std::optional<Diagnostic> collect_words(const Block& block, BlockWords& out, GCodeSystem system) {
+std::optional<Diagnostic> collect_words(const Block& block, BlockWords& out, GCodeSystem system, Dialect dialect) {
     out = BlockWords{};
+    const bool fanuc = dialect == Dialect::fanuc;
     out.lathe_increments = system == GCodeSystem::a;
     bool polar_cancel_seen = false;
     for (const Word& word : block.words) {
@@ -197,10 +236,21 @@ std::optional<Diagnostic> collect_words(const Block& block, BlockWords& out, GCo
                 return error_at(at(), "unsupported-gcode", fmt::format("{} is not supported", g_name(code, system)));
             }
             GWord& slot = out.gcodes[static_cast<std::size_t>(*group)];
+            if (fanuc && *group == ModalGroup::motion) {
+                place_fanuc_motion(out, GWord{code, word.column});
+                continue;
+            }
             // G80 beside a motion code (`G0 G80 Z50`, as CAM posts write it) cancels the cycle
             // and the motion code then moves: only two motion codes conflict.
             if (*group == ModalGroup::motion && slot.code >= 0 && (slot.code == g(80)) != (code == g(80))) {
                 if (slot.code == g(80)) slot = GWord{code, word.column};
+                continue;
+            }
+            if (fanuc && slot.code >= 0 && *group != ModalGroup::non_modal) {
+                // Fanuc: of two codes of one group the last one written is valid. One-shot codes
+                // (group 00) each do something different, so two of them stay an error.
+                out.overridden.push_back(OverriddenGCode{slot.code, code, slot.column});
+                slot = GWord{code, word.column};
                 continue;
             }
             if (slot.code >= 0) {

@@ -4,6 +4,7 @@
 // here, before anything in the block runs.
 #include <array>
 #include <optional>
+#include <vector>
 
 #include "nckit/core/diagnostic.hpp"
 #include "nckit/core/machine.hpp"
@@ -52,9 +53,22 @@ struct MWord {
     std::uint32_t column = 0;
 };
 
+//! Fanuc dialect: a G code of a block that another code of its group, written later, overrides.
+struct OverriddenGCode {
+    GCode ignored = -1;
+    GCode valid = -1;
+    std::uint32_t column = 0;  //!< the ignored code's column
+};
+
 struct BlockWords {
     std::array<GWord, group_count> gcodes{};  //!< code -1 where the group is absent
-    std::array<MWord, 5> mcodes{};            //!< in the order written
+    //! Fanuc dialect: G80 was written (group 09 there), kept apart from the group-01 code so the
+    //! motion mode that was modal before the cycle comes back. The LinuxCNC dialect keeps G80 in
+    //! the motion slot, as its motion mode.
+    bool cancels_cycle = false;
+    //! Fanuc dialect: codes dropped because a later code of their group is valid (warnings).
+    std::vector<OverriddenGCode> overridden;
+    std::array<MWord, 5> mcodes{};  //!< in the order written
     std::size_t mcode_count = 0;
     std::array<const Word*, 26> letters{};  //!< every other letter; null where absent
 
@@ -84,10 +98,13 @@ struct BlockWords {
 //! The modal group of a G code nckit knows, or nothing for an unknown code.
 [[nodiscard]] std::optional<ModalGroup> group_of(GCode code);
 
-//! Sorts the block's words; the error names the first offending word.
 //! Sorts the block's words; the error names the first offending word. Under a lathe G-code system
 //! the G codes are read through its table (lathe_codes.hpp) and, in system A, U W as X Z.
+//! Two G codes of one modal group: in the Fanuc dialect the last one written is valid (the
+//! others land in `overridden`), in the LinuxCNC dialect it is an error; two one-shot codes
+//! (G4 G10 G28 G92 ...) are an error in both (docs/gcode.md, "Several G codes of one group").
 [[nodiscard]] std::optional<Diagnostic> collect_words(const Block& block, BlockWords& out,
-                                                      GCodeSystem system = GCodeSystem::none);
+                                                      GCodeSystem system = GCodeSystem::none,
+                                                      Dialect dialect = Dialect::fanuc);
 
 }  // namespace nckit::interp

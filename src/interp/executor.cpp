@@ -77,8 +77,9 @@ double Executor::offset_value(const Word& word) const {
 
 std::optional<Diagnostic> Executor::run(const Block& block, std::vector<Move>& out, bool& program_end) {
     block_ = &block;
-    if (auto e = collect_words(block, words_, machine_.gcode_system)) return e;
+    if (auto e = collect_words(block, words_, machine_.gcode_system, machine_.dialect)) return e;
     if (auto e = check_words()) return e;
+    warn_overridden_codes();
     if (auto e = check_cutter_comp()) return e;
     if (auto e = check_corner()) return e;
 
@@ -155,16 +156,43 @@ std::optional<Diagnostic> Executor::set_modes() {
         }
     }
     if (GCode c = code(ModalGroup::distance); c >= 0) modal_.incremental = c == g(91);
-    if (GCode c = code(ModalGroup::motion); c >= 0) {
+    GCode c = code(ModalGroup::motion);
+    // Fanuc: G80 alone brings back the group-01 code that was modal before the cycle.
+    if (c < 0 && words_.cancels_cycle && is_drilling_cycle(modal_.motion)) c = modal_.motion_before_cycle;
+    if (c >= 0) {
         // Any other group-1 code (G80 included) ends a drilling cycle and forgets its words.
         if (c != modal_.motion && is_drilling_cycle(modal_.motion) && !is_drilling_cycle(c)) {
             bool keep_return = modal_.cycle.return_to_initial;
             modal_.cycle = CycleState{};
             modal_.cycle.return_to_initial = keep_return;
         }
+        if (is_drilling_cycle(c) && !is_drilling_cycle(modal_.motion)) modal_.motion_before_cycle = modal_.motion;
         modal_.motion = c;
     }
     return std::nullopt;
+}
+
+void Executor::warn_overridden_codes() const {
+    if (words_.overridden.empty() || !options_.on_warning) return;
+    for (const OverriddenGCode& o : words_.overridden) {
+        const SourceLocation at = block_->at_column(o.column);
+        if (!overrides_warned_.emplace(at.file_name(), at.line, at.column).second) continue;
+        const std::string ignored = lathe_code_name(machine_.gcode_system, o.ignored);
+        const std::string valid = lathe_code_name(machine_.gcode_system, o.valid);
+        // A group-01 code beside a drilling cycle wins whichever comes first (it cancels the
+        // cycle); within one group the code written last is valid.
+        const bool cycle_beside_motion =
+            is_drilling_cycle(o.ignored) && !is_drilling_cycle(o.valid) && o.valid != g(80);
+        Diagnostic warning =
+            error(o.column, "gcode-overridden",
+                  cycle_beside_motion
+                      ? fmt::format("{} is ignored: {} in the same block cancels the drilling cycle", ignored, valid)
+                      : fmt::format("{} is ignored: {} of the same modal group, written later in the "
+                                    "block, is valid",
+                                    ignored, valid));
+        warning.severity = Severity::warning;
+        options_.on_warning(warning);
+    }
 }
 
 std::optional<Diagnostic> Executor::set_feed_and_spindle(std::vector<Move>& out) {

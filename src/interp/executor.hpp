@@ -2,6 +2,9 @@
 // Runs one parsed block against the modal state and appends the moves it makes.
 #include <functional>
 #include <optional>
+#include <set>
+#include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -72,6 +75,8 @@ public:
 private:
     // Checks (executor_checks.cpp): nothing changes state.
     std::optional<Diagnostic> check_words();
+    //! Fanuc dialect: one warning per G code a later code of its group overrode in this block.
+    void warn_overridden_codes() const;
     std::optional<Diagnostic> check_axis_letter(const Word& word) const;
 
     // Cutter radius compensation (executor_cutter_comp.cpp).
@@ -218,7 +223,10 @@ private:
     std::array<double, 100> macro_outputs_{};  //!< #1100-#1199 as the program wrote them
     std::array<bool, 100> macro_output_set_{};
 
-    double elapsed_s_ = 0;           //!< simulated time, s
+    double elapsed_s_ = 0;  //!< simulated time, s
+    //! Where a gcode-overridden warning was given (file, line, column): a block that runs again
+    //! in a loop or a called program warns once, not on every pass.
+    mutable std::set<std::tuple<std::string, std::uint32_t, std::uint32_t>> overrides_warned_;
     int last_mcode_ = 0;             //!< #4113
     double parts_done_ = 0;          //!< #3901, counted at M2/M30
     double parts_required_ = 0;      //!< #3902

@@ -56,6 +56,10 @@ std::optional<Diagnostic> Executor::check_words() {
     const GCode explicit_motion = words_.group(ModalGroup::motion);
     const GCode non_modal = words_.group(ModalGroup::non_modal);
     motion_ = explicit_motion >= 0 ? explicit_motion : modal_.motion;
+    // Fanuc's G80 (group 09) alone: the axis words move in the group-01 mode of before the cycle.
+    if (explicit_motion < 0 && words_.cancels_cycle && is_drilling_cycle(modal_.motion)) {
+        motion_ = modal_.motion_before_cycle;
+    }
     const Plane plane = [&] {
         GCode p = words_.group(ModalGroup::plane);
         if (p < 0) return modal_.plane;

@@ -30,7 +30,7 @@ std::optional<Diagnostic> Executor::start() {
         return error_at(block.location, "config-value", "startup_gcodes holds G codes only");
     }
     block_ = &block;
-    if (auto e = collect_words(block, words_, machine_.gcode_system)) return e;
+    if (auto e = collect_words(block, words_, machine_.gcode_system, machine_.dialect)) return e;
     if (words_.group(ModalGroup::non_modal) >= 0 || words_.group(ModalGroup::exact_stop) >= 0) {
         return error(words_.group_column(ModalGroup::non_modal) + words_.group_column(ModalGroup::exact_stop),
                      "config-value", "startup_gcodes holds modal codes only");

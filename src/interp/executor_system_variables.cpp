@@ -38,6 +38,10 @@ std::optional<MacroValue> Executor::modal_code(int group) const {
     auto code = [](double g) { return MacroValue::of(g); };
     switch (group) {
         case 1:
+            // Fanuc: a drilling cycle is group 09; group 01 keeps the code of before the cycle.
+            if (machine_.dialect == Dialect::fanuc && is_drilling_cycle(modal_.motion)) {
+                return code(modal_.motion_before_cycle / 10.0);
+            }
             return code(modal_.motion / 10);
         case 2:
             return code(modal_.plane == Plane::xy ? 17 : modal_.plane == Plane::zx ? 18 : 19);

@@ -41,6 +41,9 @@ struct CycleState {
 
 struct ModalState {
     GCode motion = g(0);  //!< active group-1 code; g(80) = no motion mode
+    //! Fanuc dialect: the group-01 code that was modal when a drilling cycle began; G80 (group 09
+    //! there) makes it modal again. The LinuxCNC dialect's G80 is a motion mode of its own.
+    GCode motion_before_cycle = g(0);
     Plane plane = Plane::xy;
     bool incremental = false;  //!< G91
     FeedMode feed_mode = FeedMode::per_minute;

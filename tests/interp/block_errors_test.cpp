@@ -26,21 +26,29 @@ TEST(BlockErrors, UnsupportedGCode) {
     EXPECT_EQ(error_where("G1.5\n"), "unsupported-gcode 1:1");
 }
 
-TEST(BlockErrors, TwoGCodesOfOneModalGroup) {
-    Diagnostic d = error_of("G0 G1 X1\n");
+TEST(BlockErrors, TwoGCodesOfOneModalGroupInTheLinuxCncDialect) {
+    // RS-274/NGC and LinuxCNC refuse two codes of one group; the Fanuc dialect takes the last
+    // one (fanuc_groups_test.cpp).
+    const MachineConfig ngc = linuxcnc_mill();
+    Diagnostic d = error_of("G0 G1 X1\n", ngc);
     EXPECT_EQ(where(d), "modal-conflict 1:4");
     EXPECT_EQ(d.message, "G0 and G1 are in the same modal group");
-    EXPECT_EQ(error_where("G90 X1 G91\n"), "modal-conflict 1:8");
-    EXPECT_EQ(error_where("G17 G18\n"), "modal-conflict 1:5");
-    EXPECT_EQ(error_where("G54 G59\n"), "modal-conflict 1:5");
-    EXPECT_EQ(error_where("G20 G21\n"), "modal-conflict 1:5");
-    EXPECT_EQ(error_where("G94 G95\n"), "modal-conflict 1:5");
-    EXPECT_EQ(error_where("G96 G97\n"), "modal-conflict 1:5");
-    EXPECT_EQ(error_where("G61 G64\n"), "modal-conflict 1:5");
-    EXPECT_EQ(error_where("G7 G8\n"), "modal-conflict 1:4");
+    EXPECT_EQ(error_where("G90 X1 G91\n", ngc), "modal-conflict 1:8");
+    EXPECT_EQ(error_where("G17 G18\n", ngc), "modal-conflict 1:5");
+    EXPECT_EQ(error_where("G54 G59\n", ngc), "modal-conflict 1:5");
+    EXPECT_EQ(error_where("G20 G21\n", ngc), "modal-conflict 1:5");
+    EXPECT_EQ(error_where("G94 G95\n", ngc), "modal-conflict 1:5");
+    EXPECT_EQ(error_where("G61 G64\n", ngc), "modal-conflict 1:5");
+    EXPECT_EQ(error_where("G1 G1 X1 F1\n", ngc), "modal-conflict 1:4");
+    EXPECT_EQ(error_where("G81 G82 X1 Z-1 R1 F1\n", ngc), "modal-conflict 1:5");
+}
+
+TEST(BlockErrors, TwoOneShotGCodesConflictInBothDialects) {
     EXPECT_EQ(error_of("G4 P1 G92 X0\n").message, "G4 and G92 are in the same modal group");
-    EXPECT_EQ(error_of("G92 X0 G92.1\n").message, "G92 and G92.1 are in the same modal group");
-    EXPECT_EQ(error_where("G1 G1 X1 F1\n"), "modal-conflict 1:4");
+    for (const MachineConfig& machine : {default_mill(), linuxcnc_mill()}) {
+        EXPECT_EQ(error_of("G92 X0 G92.1\n", machine).message, "G92 and G92.1 are in the same modal group");
+        EXPECT_EQ(error_where("G28 G92 X0\n", machine), "modal-conflict 1:5");
+    }
 }
 
 TEST(BlockErrors, NegativeOrOddMCodeIsABadValue) {
@@ -129,11 +137,14 @@ TEST(BlockErrors, TwoCodesThatBothUseAxisWords) {
 
 // ---- unused words -------------------------------------------------------------------------
 
-TEST(UnusedWords, AxisWordsUnderG80) {
-    Diagnostic d = error_of("G80 X1\n");
+TEST(UnusedWords, AxisWordsUnderG80InTheLinuxCncDialect) {
+    // G80 is a motion mode of its own in RS-274/NGC; in the Fanuc dialect it is group 09 and the
+    // group-01 mode moves the axes (fanuc_groups_test.cpp).
+    const MachineConfig ngc = linuxcnc_mill();
+    Diagnostic d = error_of("G80 X1\n", ngc);
     EXPECT_EQ(where(d), "unused-word 1:5");
     EXPECT_EQ(d.message, "X word with no motion mode to use it (G80 is active)");
-    EXPECT_EQ(error_where("G80\nG90 Z1\n"), "unused-word 2:5");
+    EXPECT_EQ(error_where("G80\nG90 Z1\n", ngc), "unused-word 2:5");
 }
 
 TEST(UnusedWords, AxisWordsWithG4) {
@@ -150,7 +161,7 @@ TEST(UnusedWords, CentreOffsetsWithoutArc) {
     EXPECT_EQ(d.message, "I word with no G2/G3 to use it");
     EXPECT_EQ(error_where("G0 X1 J1\n"), "unused-word 1:7");
     EXPECT_EQ(error_where("G1 X1 K1 F1\n"), "unused-word 1:7");
-    EXPECT_EQ(error_where("G2 X2 I1 F1\nG80 I1\n"), "unused-word 2:5");
+    EXPECT_EQ(error_where("G2 X2 I1 F1\nG80 I1\n", linuxcnc_mill()), "unused-word 2:5");
     EXPECT_EQ(error_where("G2 G4 P1 I1\n"), "unused-word 1:10");
     EXPECT_EQ(error_where("G33 Z-1 K1\nG33 Z-2 I1 K1\n"), "unused-word 2:9");
 }

@@ -73,7 +73,9 @@ TEST(MacroSystemVariables, ModalGCodesAtStart) {
 TEST(MacroSystemVariables, ModalGCodesFollowTheProgram) {
     EXPECT_EQ(value_after("G1 X1 F100\n#1=#4001"), 1.0);
     EXPECT_EQ(value_after("G3 X0 Y0 I1 F100\n#1=#4001"), 3.0);
-    EXPECT_EQ(value_after("G80\n#1=#4001"), 80.0);
+    // G80 is group 09 on a Fanuc control: group 01 keeps its code.
+    EXPECT_EQ(value_after("G1 X1 F100\nG80\n#1=#4001"), 1.0);
+    EXPECT_EQ(value_after("G80\n#1=#4009"), 80.0);
     EXPECT_EQ(value_after("G18\n#1=#4002"), 18.0);
     EXPECT_EQ(value_after("G19\n#1=#4002"), 19.0);
     EXPECT_EQ(value_after("G91\n#1=#4003"), 91.0);
