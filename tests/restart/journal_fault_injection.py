@@ -71,7 +71,8 @@ def last_complete_block(data: bytes) -> int | None:
     block, header = 0, False
     for line in data.split(b"\n")[:-1]:  # the piece after the last newline is torn
         payload, sep, crc = line.rpartition(b" *")
-        if not sep or len(crc) != 8:
+        # Eight hex digits exactly: int(..., 16) would also take " 5724889" (a flipped '0').
+        if not sep or len(crc) != 8 or not all(c in b"0123456789abcdefABCDEF" for c in crc):
             break
         try:
             if zlib.crc32(payload) != int(crc, 16):
