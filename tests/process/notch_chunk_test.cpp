@@ -10,38 +10,16 @@
 #include "nckit/gcode/program_source.hpp"
 #include "nckit/interp/interpreter.hpp"
 #include "nckit/process/notch/notch.hpp"
+#include "notch_test_support.hpp"
 #include "nckit/process/notch/notch_json.hpp"
 
 namespace nckit {
 namespace {
 
-MachineConfig notcher() {
-    Result<MachineConfig> machine =
-        load_machine_config(std::string(NCKIT_SOURCE_DIR) + "/examples/machines/notcher.toml");
-    EXPECT_TRUE(machine.ok());
-    return *machine;
-}
-
-std::vector<Move> interpret(ProgramSource source, const MachineConfig& machine) {
-    Interpreter interpreter(machine, std::move(source));
-    std::vector<Move> moves;
-    for (;;) {
-        InterpResult result = interpreter.next();
-        if (std::holds_alternative<ProgramEnd>(result)) break;
-        if (const auto* d = std::get_if<Diagnostic>(&result)) {
-            ADD_FAILURE() << format_diagnostic(*d);
-            break;
-        }
-        moves.push_back(std::get<Move>(result));
-    }
-    return moves;
-}
-
-std::vector<Move> file(const std::string& path, const MachineConfig& machine) {
-    Result<ProgramSource> source = ProgramSource::open(std::string(NCKIT_SOURCE_DIR) + "/" + path);
-    EXPECT_TRUE(source.ok()) << path;
-    return interpret(std::move(*source), machine);
-}
+using notch_test::file;
+using notch_test::interpret;
+using notch_test::notcher;
+using notch_test::program;
 
 //! Everything the job gives, as text: the program, each cut's JSON, or the errors.
 std::string outcome(const std::vector<Move>& moves, const MachineConfig& machine, std::size_t cuts_per_chunk) {

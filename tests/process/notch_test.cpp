@@ -11,37 +11,17 @@
 #include "nckit/interp/interpreter.hpp"
 #include "nckit/plan/profile.hpp"
 #include "nckit/process/notch/notch.hpp"
+#include "notch_test_support.hpp"
 #include "../../src/process/notch/notch_geometry.hpp"
 #include "../../src/process/notch/notch_index.hpp"
 
 namespace nckit {
 namespace {
 
-MachineConfig notcher() {
-    Result<MachineConfig> machine =
-        load_machine_config(std::string(NCKIT_SOURCE_DIR) + "/examples/machines/notcher.toml");
-    EXPECT_TRUE(machine.ok());
-    return *machine;
-}
-
-std::vector<Move> interpret(ProgramSource source, const MachineConfig& machine) {
-    Interpreter interpreter(machine, std::move(source));
-    std::vector<Move> moves;
-    for (;;) {
-        InterpResult result = interpreter.next();
-        if (std::holds_alternative<ProgramEnd>(result)) break;
-        if (const auto* d = std::get_if<Diagnostic>(&result)) {
-            ADD_FAILURE() << format_diagnostic(*d);
-            break;
-        }
-        moves.push_back(std::get<Move>(result));
-    }
-    return moves;
-}
-
-std::vector<Move> program(const std::string& text, const MachineConfig& machine) {
-    return interpret(ProgramSource::from_string(text, "t.nc"), machine);
-}
+using notch_test::file;
+using notch_test::interpret;
+using notch_test::notcher;
+using notch_test::program;
 
 std::vector<Move> conrod(const MachineConfig& machine) {
     Result<ProgramSource> source = ProgramSource::open(std::string(NCKIT_SOURCE_DIR) + "/examples/notch/conrod.nc");
