@@ -34,7 +34,6 @@ import random
 import signal
 import subprocess
 import sys
-import tempfile
 import time
 import zlib
 from pathlib import Path
@@ -43,6 +42,7 @@ HERE = Path(__file__).resolve().parent
 REPO = HERE.parents[1]
 sys.path.insert(0, str(REPO / "tests" / "macro_programs"))
 from expand_roundtrip import differ  # noqa: E402
+from per_program import Failure, run_each  # noqa: E402
 
 # (program, machine, verb that runs the machine)
 PROGRAMS = [
@@ -52,10 +52,6 @@ PROGRAMS = [
     ("examples/02_lathe_shaft.ngc", "examples/machines/lathe.toml", "steps"),
 ]
 RETAINED_START = "#500 = 41\n#501 = 0\n#502 = 40\n"
-
-
-class Failure(Exception):
-    pass
 
 
 def run(cmd: list[str], cwd: Path) -> subprocess.CompletedProcess:
@@ -257,17 +253,7 @@ def main() -> int:
     seed = args.seed if args.seed is not None else random.randrange(1 << 30)
     print(f"seed {seed}", flush=True)
     rng = random.Random(seed)
-    failed = 0
-    with tempfile.TemporaryDirectory(prefix="nckit-journal-") as tmp:
-        for name, machine, verb in PROGRAMS:
-            work = Path(tempfile.mkdtemp(dir=tmp))
-            try:
-                print(f"ok {name}: {check_program(args, rng, name, machine, verb, work)}", flush=True)
-            except Failure as e:
-                print(f"FAIL {name}: {e}", flush=True)
-                failed += 1
-    print(f"{len(PROGRAMS) - failed} passed, {failed} failed")
-    return 1 if failed else 0
+    return run_each(PROGRAMS, "nckit-journal-", lambda p, work: check_program(args, rng, *p, work))
 
 
 if __name__ == "__main__":

@@ -26,7 +26,6 @@ import json
 import os
 import subprocess
 import sys
-import tempfile
 import zlib
 from pathlib import Path
 
@@ -35,15 +34,12 @@ REPO = HERE.parents[1]
 sys.path.insert(0, str(REPO / "tests" / "macro_programs"))
 sys.path.insert(0, str(REPO / "tests" / "linuxcnc_plugin"))
 from expand_roundtrip import differ  # noqa: E402
+from per_program import Failure, run_each  # noqa: E402
 from rs274_support import plugin_loaded  # noqa: E402
 
 MACHINE = "examples/machines/mill.toml"
 PROGRAMS = ["examples/restart/parts_counter.nc", "examples/restart/rotated_slots.nc"]
 RETAINED_START = "#500 = 41\n#501 = 0\n#502 = 40\n"
-
-
-class Failure(Exception):
-    pass
 
 
 def run(cmd: list[str], cwd: Path, timeout: int = 120) -> subprocess.CompletedProcess:
@@ -139,17 +135,7 @@ def main() -> int:
     ap.add_argument("--plugin", required=True)
     ap.add_argument("--rs274", default="rs274")
     args = ap.parse_args()
-    failed = 0
-    with tempfile.TemporaryDirectory(prefix="nckit-plugin-journal-") as tmp:
-        for name in PROGRAMS:
-            work = Path(tempfile.mkdtemp(dir=tmp))
-            try:
-                print(f"ok {name}: {check_program(args, name, work)}", flush=True)
-            except Failure as e:
-                print(f"FAIL {name}: {e}", flush=True)
-                failed += 1
-    print(f"{len(PROGRAMS) - failed} passed, {failed} failed")
-    return 1 if failed else 0
+    return run_each(PROGRAMS, "nckit-plugin-journal-", lambda name, work: check_program(args, name, work))
 
 
 if __name__ == "__main__":

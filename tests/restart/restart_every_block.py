@@ -32,7 +32,6 @@ import json
 import re
 import subprocess
 import sys
-import tempfile
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
@@ -40,6 +39,7 @@ REPO = HERE.parents[1]
 sys.path.insert(0, str(REPO / "tests" / "macro_programs"))
 sys.path.insert(0, str(REPO / "tests" / "programs"))
 from expand_roundtrip import differ  # noqa: E402  (1e-9 comparison of two move records)
+from per_program import Failure, run_each  # noqa: E402
 
 # (program, machine file or None, library folder or None), relative to the repository.
 PROGRAMS = [
@@ -70,10 +70,6 @@ STATE_KEYS = ["tool", "tool_in_spindle", "spindle", "speed", "constant_surface_s
               "diameter_mode", "work_system", "work_offset", "g92_offset", "g52_offset", "length_offset", "h",
               "tool_offset", "transforms", "transform"]
 BLOCKS_RUN_RE = re.compile(r"\((\d+) blocks run\)")
-
-
-class Failure(Exception):
-    pass
 
 
 def run(cmd: list[str], cwd: Path) -> subprocess.CompletedProcess:
@@ -175,17 +171,7 @@ def main() -> int:
     ap.add_argument("--max-targets", type=int, default=25, help="targets per program (%(default)s)")
     ap.add_argument("--rs274", default=None, help="also have this rs274 read a few restart programs")
     args = ap.parse_args()
-    failed = 0
-    with tempfile.TemporaryDirectory(prefix="nckit-restart-") as tmp:
-        for name, machine, library in PROGRAMS:
-            work = Path(tempfile.mkdtemp(dir=tmp))
-            try:
-                print(f"ok {name}: {check_program(args, name, machine, library, work)}", flush=True)
-            except Failure as e:
-                print(f"FAIL {name}: {e}", flush=True)
-                failed += 1
-    print(f"{len(PROGRAMS) - failed} passed, {failed} failed")
-    return 1 if failed else 0
+    return run_each(PROGRAMS, "nckit-restart-", lambda p, work: check_program(args, *p, work))
 
 
 if __name__ == "__main__":
