@@ -98,7 +98,8 @@ std::optional<Diagnostic> Executor::rough_cycle(std::vector<Move>& out) {
         profile.pop_back();
     }
     if (profile.empty()) {
-        return error(column_of('Q'), "bad-cycle", fmt::format("{}: no finishing shape between P and Q", name));
+        return error(column_of('Q'), "bad-cycle",
+                     fmt::format("{}: no finishing shape between P and Q: its blocks make no G1, G2 or G3 move", name));
     }
     const double a_d = start[axes.depth];
     const double a_l = start[axes.length];
@@ -114,9 +115,9 @@ std::optional<Diagnostic> Executor::rough_cycle(std::vector<Move>& out) {
         const char side = up > 0 ? '+' : '-';
         return error(depth_allowance->column, "bad-cycle",
                      fmt::format("finishing allowance {} has the wrong sign: the start point lies at {}{} of the P "
-                                 "block's point, so the shape is cut from {}{} (a shape cut from {}{} starts there)",
+                                 "block's point, so the shape is cut from {}{}; to cut from {}{}, start at {}{} of it",
                                  depth_allowance->letter, side, letter(axes.depth), side, letter(axes.depth),
-                                 up > 0 ? '-' : '+', letter(axes.depth)));
+                                 up > 0 ? '-' : '+', letter(axes.depth), up > 0 ? '-' : '+', letter(axes.depth)));
     }
     // Type I: the shape runs one way in both axes (Fanuc alarm PS0064 otherwise).
     double along = 0;
