@@ -99,7 +99,9 @@ def main() -> int:
         run = subprocess.run([args.nckit, "moves", str(program), "--machine", str(HERE / machine), "--json"],
                              capture_output=True, text=True, timeout=120)
         if run.returncode != 0:
-            first = run.stderr.strip().splitlines()[0] if run.stderr.strip() else f"exit {run.returncode}"
+            lines = run.stderr.strip().splitlines()
+            errors = [line for line in lines if ": error:" in line]  # warnings (a tape leader) may come first
+            first = (errors or lines or [f"exit {run.returncode}"])[0]
             if args.list:
                 print(f"| {program.name} | refused | {first.replace(str(HERE) + '/', '')} |")
             continue
