@@ -17,9 +17,8 @@ std::string_view cycle_letters(GCode code) {
     if (code == lathe_turning_cycle || code == lathe_facing_cycle) return "XZUWR";
     if (code == lathe_threading_cycle) return "XZUWRQ";
     if (code == lathe_finish) return "PQ";
-    if (code == lathe_rough_turning || code == lathe_rough_facing || code == lathe_pattern_repeat) {
-        return "PQUWRD";
-    }
+    if (code == lathe_rough_turning || code == lathe_rough_facing) return "PQUWRD";
+    if (code == lathe_pattern_repeat) return "PQUWRDIK";  // I K D: the one-block form
     if (code == lathe_face_grooving || code == lathe_od_grooving) return "XZUWPQRIK";
     if (code == lathe_thread_repeat) return "XZUWPQRIKDA";
     return "";
@@ -52,6 +51,14 @@ std::optional<Diagnostic> Executor::check_lathe_cycle_words(GCode cycle) const {
             continue;
         }
         if (allowed.find(c) == std::string_view::npos) {
+            if (cycle == lathe_finish && std::string_view("UWDIK").find(c) != std::string_view::npos) {
+                // Haas class programs copy G71's words onto G70; neither Fanuc nor Haas gives G70
+                // an allowance or a depth, so the words have no meaning to run.
+                return error(word.column, "unused-word",
+                             fmt::format("{} takes no {} word: {} P Q finishes the shape as programmed ({} is a "
+                                         "word of the roughing cycles)",
+                                         name, c, name, c));
+            }
             return error(word.column, "unused-word", fmt::format("{} takes no {} word", name, c));
         }
         if (c == 'X' || c == 'Z' || ((c == 'U' || c == 'W') && words_.lathe_increments)) {

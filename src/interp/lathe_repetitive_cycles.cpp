@@ -49,6 +49,13 @@ std::optional<Diagnostic> Executor::lathe_cycle_settings() {
     const GCode cycle = words_.group(ModalGroup::non_modal);
     const std::string name = lathe_code_name(machine_.gcode_system, cycle);
     LatheCycleSettings& settings = modal_.lathe.settings;
+    // D I K belong to the one-block forms (G71 P Q U W D, G73 P Q I K U W D), which name P and Q.
+    for (const char c : {'D', 'I', 'K'}) {
+        if (const Word* stray = words_.word(c)) {
+            return error(stray->column, "unused-word",
+                         fmt::format("{}'s first block takes no {} (the one-block form names P and Q)", name, c));
+        }
+    }
     auto positive = [&](const Word* word, double& into, const char* what) -> std::optional<Diagnostic> {
         if (word == nullptr) return std::nullopt;
         const double value = offset_value(*word);
@@ -154,10 +161,32 @@ std::optional<Diagnostic> Executor::finish_cycle(std::vector<Move>& out) {
 
 std::optional<Diagnostic> Executor::pattern_cycle(std::vector<Move>& out) {
     const std::string name = lathe_code_name(machine_.gcode_system, lathe_pattern_repeat);
-    const LatheCycleSettings& settings = modal_.lathe.settings;
+    LatheCycleSettings settings = modal_.lathe.settings;
+    if (const Word* r = words_.word('R')) {
+        return error(
+            r->column, "unused-word",
+            fmt::format("{} P Q takes no R: the number of passes is R of the block {} U W R, or D here", name, name));
+    }
+    // The one-block form of Fanuc's Series 15 and of Haas: G73 P Q I(relief X, radius) K(relief Z)
+    // U W D(passes). Its words hold for this cycle alone; the block G73 U W R is not changed.
+    const Word* relief_x = words_.word('I');
+    const Word* relief_z = words_.word('K');
+    if (const Word* d = words_.word('D')) {
+        if (d->value < 1 || d->value > max_pattern_passes || d->value != std::floor(d->value)) {
+            return error(d->column, "bad-value",
+                         fmt::format("{} D (passes) must be a whole number from 1 to {}", name, max_pattern_passes));
+        }
+        settings.divisions = static_cast<int>(d->value);
+        settings.relief_x_mm = relief_x != nullptr ? offset_value(*relief_x) : 0.0;
+        settings.relief_z_mm = relief_z != nullptr ? offset_value(*relief_z) : 0.0;
+    } else if (relief_x != nullptr || relief_z != nullptr) {
+        return error((relief_x != nullptr ? relief_x : relief_z)->column, "missing-word",
+                     fmt::format("{} P Q with I K (relief) needs D, the number of passes", name));
+    }
     if (settings.divisions < 1) {
-        return error(words_.group_column(ModalGroup::non_modal), "missing-word",
-                     fmt::format("{} needs its number of passes first: a block {} U W R", name, name));
+        return error(
+            words_.group_column(ModalGroup::non_modal), "missing-word",
+            fmt::format("{} needs its number of passes first: a block {} U W R (or D in this block)", name, name));
     }
     const AxisVector start = position_;
     AxisVector allowance;

@@ -57,7 +57,14 @@ std::optional<Diagnostic> Executor::rough_cycle(std::vector<Move>& out) {
     // Fanuc's rule: the P block that names the length axis (Z or W for G71) makes type II.
     const char length_word = letter(axes.length);
     const char length_incremental = facing ? 'U' : 'W';
-    const bool pockets = pq.p_letters.find(length_word) != std::string::npos ||
+    // R1 in the P Q block selects type II as well: Haas's one-block form (its "YASNAC type II").
+    const Word* type_word = words_.word('R');
+    if (type_word != nullptr && type_word->value != 1) {
+        return error(type_word->column, "bad-value",
+                     fmt::format("{} P Q takes R1 only (type II roughing); the escape R goes in the block {} {} R",
+                                 name, name, depth_letter));
+    }
+    const bool pockets = type_word != nullptr || pq.p_letters.find(length_word) != std::string::npos ||
                          pq.p_letters.find(length_incremental) != std::string::npos;
     const char* type = pockets ? "type II" : "type I";
     // The P block's move (its S, T or M events aside: they count only for G70).
@@ -91,7 +98,8 @@ std::optional<Diagnostic> Executor::rough_cycle(std::vector<Move>& out) {
         profile.pop_back();
     }
     if (profile.empty()) {
-        return error(column_of('Q'), "bad-cycle", fmt::format("{}: no finishing shape between P and Q", name));
+        return error(column_of('Q'), "bad-cycle",
+                     fmt::format("{}: no finishing shape between P and Q: its blocks make no G1, G2 or G3 move", name));
     }
     const double a_d = start[axes.depth];
     const double a_l = start[axes.length];
@@ -102,10 +110,14 @@ std::optional<Diagnostic> Executor::rough_cycle(std::vector<Move>& out) {
     }
     const Word* depth_allowance = facing ? w : u;
     if (depth_allowance != nullptr && allowance[axes.depth] * up < 0) {
-        // The allowance would move the shape into the part: Fanuc leaves it on the side the tool comes from.
+        // The allowance would move the shape into the part: Fanuc leaves it on the side the tool
+        // comes from, and that side is where the start point lies.
+        const char side = up > 0 ? '+' : '-';
         return error(depth_allowance->column, "bad-cycle",
-                     fmt::format("finishing allowance {} has the wrong sign: the shape is cut from {}{}",
-                                 depth_allowance->letter, up > 0 ? "+" : "-", letter(axes.depth)));
+                     fmt::format("finishing allowance {} has the wrong sign: the start point lies at {}{} of the P "
+                                 "block's point, so the shape is cut from {}{}; to cut from {}{}, start at {}{} of it",
+                                 depth_allowance->letter, side, letter(axes.depth), side, letter(axes.depth),
+                                 up > 0 ? '-' : '+', letter(axes.depth), up > 0 ? '-' : '+', letter(axes.depth)));
     }
     // Type I: the shape runs one way in both axes (Fanuc alarm PS0064 otherwise).
     double along = 0;

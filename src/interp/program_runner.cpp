@@ -148,6 +148,15 @@ std::optional<InterpResult> ProgramRunner::fill(std::vector<Move>& pending) {
                 return InterpResult(alarm_at(block_, 1, alarm::format,
                                              fmt::format("program O{} ends without M99", frame().program_number)));
             }
+            if (!leader_checked_ && !in_call) {
+                leader_checked_ = true;
+                if ((**line).number == 1 && source().rereadable()) {
+                    if (is_leader(**line)) continue;
+                    line = source().next();  // line 1 again: is_leader() read past it
+                    if (!line) return InterpResult(line.diagnostics().front());
+                    if (!line.value()) return finish_main(pending);
+                }
+            }
             const ProgramSource::Line& text = **line;
             if (options_.block_delete && starts_with_block_delete(text.text)) {
                 seen_block_ = true;

@@ -150,6 +150,8 @@ private:
     };
     static constexpr std::size_t max_cached_blocks = 16384;
     [[nodiscard]] bool repeating() const;  //!< blocks here may run again: cache and count them
+    //! The first line of the main program is a leader when the tape start '%' follows it.
+    [[nodiscard]] bool is_leader(const ProgramSource::Line& first);
     const Block* cached_block();
     const Block* remember(const Block& block);
     std::unordered_map<CacheKey, CachedBlock, CacheKeyHash> block_cache_;
@@ -170,6 +172,7 @@ private:
     bool stop_requested_ = false;           // #3006 = 1 (MESSAGE) in the statement just run
     bool seen_tape_mark_ = false;
     bool seen_block_ = false;
+    bool leader_checked_ = false;  // the file's first line was looked at as a leader
     bool error_is_recoverable_ = false;
 };
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The example lathe as a user runs it: a Fanuc program without G98/G99 feeds per revolution
 and `nckit plan` times it from the spindle speed; a code of another G-code system, a bad
-cycle and a bad offset write stop with FILE:LINE:COL: error: and exit status 2."""
+cycle (the one-block forms' words among them) and a bad offset write stop with FILE:LINE:COL: error: and exit status 2."""
 import json
 import pathlib
 import sys
@@ -42,6 +42,15 @@ def main() -> int:
                          "cycle.nc:3:13: error:"),
             "offset.nc": ("G10 P200 X1.\nM30\n", "offset.nc:1:5: error:"),
             "g90.nc": ("G0 X60. Z2.\nG90 X50. F0.2\nM30\n", "g90.nc:2:1: error:"),
+            # The one-block forms: R other than R1 on G71 P Q, G73 P Q I without D, D on a first
+            # block, and G71's words on G70.
+            "g71r.nc": ("G0 X60. Z2.\nG71 P10 Q20 U0.4 D2. R0.5 F0.2\nN10 G0 X30.\nN20 G1 Z-10.\nM30\n",
+                        "g71r.nc:2:22: error:"),
+            "g73i.nc": ("G0 X60. Z2.\nG73 P10 Q20 I3. U0.4 F0.2\nN10 G0 X30.\nN20 G1 Z-10.\nM30\n",
+                        "g73i.nc:2:13: error:"),
+            "g71d.nc": ("G71 U2. R0.5 D1.\nM30\n", "g71d.nc:1:14: error:"),
+            "g70u.nc": ("G0 X60. Z2.\nG70 P10 Q20 U0 W0 D0.01\nN10 G0 X30.\nN20 G1 Z-10.\nM30\n",
+                        "g70u.nc:2:13: error:"),
         }
         for name, (text, where) in cases.items():
             path = pathlib.Path(tmp) / name

@@ -161,6 +161,66 @@ TEST(LatheCycles, G73RepeatsTheShapeWithShrinkingRelief) {
                  {110, 160, true}});
 }
 
+TEST(LatheCycles, G73OneBlockFormRepeatsTheSameWay) {
+    // The one-block form (Fanuc Series 15, Haas): I K are the relief (I a radius), D the number
+    // of passes, in the P Q block. The manual's example written so runs the same passes as its
+    // two-block form above: moved by 16, 9, 2 (relief 14 shrinking by 7 a pass, plus the
+    // allowance 2), so the first pass goes in to (r56, Z136).
+    const char* shape =
+        "N014 G00 X80.0 W-40.0\n"
+        "N015 G01 W-20.0 F0.15\n"
+        "N016 X120.0 W-10.0\n"
+        "N017 W-20.0\n"
+        "N018 G02 X160.0 W-20.0 R20.0\n"
+        "N019 G01 X180.0 W-10.0\n"
+        "M30\n";
+    const std::string two_block =
+        std::string("G00 X220.0 Z160.0\nG73 U14.0 W14.0 R3\n") + "G73 P014 Q019 U4.0 W2.0 F0.3\n" + shape;
+    const std::string one_block =
+        std::string("G00 X220.0 Z160.0\n") + "G73 P014 Q019 I14.0 K14.0 U4.0 W2.0 D3 F0.3\n" + shape;
+    const auto want = path_of(moves_of(two_block, system_a_lathe(300)));
+    const auto got = path_of(moves_of(one_block, system_a_lathe(300)));
+    ASSERT_EQ(got.size(), want.size());
+    expect_path(got, 0, want);
+    expect_path(got, 1, {{56, 136, true}});
+    // Its words hold for that cycle alone: a later G73 P Q without them has no number of passes.
+    EXPECT_EQ(error_where(one_block.substr(0, one_block.size() - 4) + "G73 P014 Q019 U4.0 W2.0 F0.3\nM30\n",
+                          system_a_lathe(300)),
+              "missing-word 9:1");
+}
+
+TEST(LatheCycles, G71R1SelectsTypeII) {
+    // Haas's one-block form selects type II with R1: the pocket of lathe_pockets_test.cpp, its P
+    // block naming X alone, roughs as when the P block names Z (Fanuc's rule). Level 19 ends on
+    // the far wall at Z = -25 - 5 x 9/10 = -29.5.
+    const std::string shape = "G1 Z-10.\nX20. Z-15.\nZ-25.\nX40. Z-30.\nN20 Z-40.\nM30\n";
+    const auto with_r1 =
+        path_of(moves_of("G0 X50. Z2.\nG71 P10 Q20 U0 W0 D2. R1 F0.2\nN10 G0 X30.\n" + shape, system_a_lathe()));
+    const auto fanuc_rule =
+        path_of(moves_of("G0 X50. Z2.\nG71 U2.\nG71 P10 Q20 U0 W0 F0.2\nN10 G0 X30. Z2.\n" + shape, system_a_lathe()));
+    ASSERT_EQ(with_r1.size(), fanuc_rule.size());
+    expect_path(with_r1, 0, fanuc_rule);
+    expect_path(with_r1, 9, {{19, 2, true}, {19, -29.5, false}});
+}
+
+TEST(LatheCycles, OneBlockFormErrors) {
+    const MachineConfig lathe = system_a_lathe();
+    const std::string shape = "N10 G0 X30.\nN20 G1 Z-10.\nM30\n";
+    // R on G71 P Q is R1 (type II) or nothing; the escape belongs to the block G71 U R.
+    EXPECT_EQ(error_where("G0 X60. Z2.\nG71 P10 Q20 U0.4 D2. R0.5 F0.2\n" + shape, lathe), "bad-value 2:22");
+    // D I K name the one-block form: not on a first block.
+    EXPECT_EQ(error_where("G71 U2. R0.5 D1.\n", lathe), "unused-word 1:14");
+    EXPECT_EQ(error_where("G73 U1. W1. R3 I1.\n", lathe), "unused-word 1:16");
+    // G73 P Q: relief without a number of passes, passes not a whole number, R in the P Q block.
+    EXPECT_EQ(error_where("G0 X60. Z2.\nG73 P10 Q20 I3. U0.4 F0.2\n" + shape, lathe), "missing-word 2:13");
+    EXPECT_EQ(error_where("G0 X60. Z2.\nG73 P10 Q20 I3. D2.5 F0.2\n" + shape, lathe), "bad-value 2:17");
+    EXPECT_EQ(error_where("G0 X60. Z2.\nG73 P10 Q20 I3. D0 F0.2\n" + shape, lathe), "bad-value 2:17");
+    EXPECT_EQ(error_where("G0 X60. Z2.\nG73 P10 Q20 U0.4 R3 F0.2\n" + shape, lathe), "unused-word 2:18");
+    // G70 takes no allowance or depth (the Haas class programs of tests/real_lathe copy them).
+    EXPECT_EQ(error_where("G0 X60. Z2.\nG70 P10 Q20 U0 W0 D0.01\n" + shape, lathe), "unused-word 2:13");
+    EXPECT_EQ(error_where("G0 X60. Z2.\nG70 P10 Q20 D0.01\n" + shape, lathe), "unused-word 2:13");
+}
+
 TEST(LatheCycles, ProgramGoesOnAfterTheShapeAndG70FindsItFarAway) {
     // The P-Q blocks run only through the cycles; G70 later in the program finds them again.
     const char* program =

@@ -64,6 +64,27 @@ TEST(ProgramEnd, PercentAfterABlockEndsTheProgram) {
     EXPECT_EQ(texts("G0 X1\n%\nG0 X2\n"), (Texts{"G0 X1.0000 Y0.0000 Z0.0000"}));
 }
 
+TEST(ProgramEnd, ATitleBeforeTheTapeStartIsTheLeader) {
+    // Fanuc's label skip: a first line that is no block, with the tape start '%' after it, is
+    // the tape's leader (the title of tests/real_lathe/37..42); the program runs from the '%',
+    // with a warning at line 1.
+    std::vector<Diagnostic> warnings;
+    InterpreterOptions options;
+    options.on_warning = [&](const Diagnostic& d) { warnings.push_back(d); };
+    EXPECT_EQ(texts("PAWN 30\n%\nO0002\nG0 X1\nM30\n%\n", default_mill(), options),
+              (Texts{"G0 X1.0000 Y0.0000 Z0.0000", "M30"}));
+    ASSERT_EQ(warnings.size(), 1U);
+    EXPECT_EQ(where(warnings[0]), "tape-leader 1:1");
+    EXPECT_EQ(warnings[0].severity, Severity::warning);
+    // Bytes that are no G-code at all (a title in another script) are a leader as well, and
+    // '%' with its label on the line (`%O8010;`) still starts the tape.
+    EXPECT_EQ(texts("\xe5\x85\xb5 30\n%O8010;\nG0 X1;\n"), (Texts{"G0 X1.0000 Y0.0000 Z0.0000"}));
+    // Without the '%' after it, such a line is an error as before, at line 1.
+    EXPECT_EQ(error_where("PAWN 30\nG0 X1\n"), "syntax 1:1");
+    // A first line that reads as a block is a block: the '%' after it ends the program.
+    EXPECT_EQ(texts("G0 X1\n%\nG0 X2\n"), (Texts{"G0 X1.0000 Y0.0000 Z0.0000"}));
+}
+
 InterpreterOptions block_delete_on() {
     InterpreterOptions options;
     options.block_delete = true;

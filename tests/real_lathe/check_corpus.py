@@ -3,13 +3,14 @@
 programs.csv names for it (corpus_lathe.toml: the example lathe, Fanuc G-code system A, with
 longer travel; corpus_lathe_b.toml: the same in system B) and reports how many nckit accepts,
 in all and per source repository. For each accepted program the
-moves are checked: every cutting move has a positive feed, and every roughing feed of a G71
-ends on or outside the finished shape that its G70 cuts (the cycle never cuts into the
-finishing allowance). Exit status 1 when fewer than --min-accepted programs pass or a check
+moves are checked: every cutting move has a positive feed, and every roughing feed of a G71 or
+G73 (lines and arcs, the arcs in chords) stays on or outside the finished shape that its G70
+cuts (the cycle never cuts into the finishing allowance). Exit status 1 when fewer than --min-accepted programs pass or a check
 fails. `--list` prints each program's status (the table in BENCHMARKS.md)."""
 import argparse
 import csv
 import json
+import math
 import pathlib
 import re
 import subprocess
@@ -17,7 +18,8 @@ import sys
 
 HERE = pathlib.Path(__file__).resolve().parent
 ROOT = HERE.parents[1]
-CYCLE_RE = re.compile(r"G0?71\s*P0*(\d+)\s*Q0*(\d+)", re.I)
+# G71 (stock removal) and G73 (pattern repeating) with their shape: P before Q, as written.
+CYCLE_RE = re.compile(r"G0?7[13]\s*(?:[UW][-+.\d]*\s*)*P0*(\d+)\s*Q0*(\d+)", re.I)
 SEQ_RE = re.compile(r"^\s*N0*(\d+)", re.I)
 
 
@@ -45,6 +47,28 @@ def profile_x_at(segments, z):
     return best
 
 
+def segments_of(move: dict) -> list:
+    """A feed move as (Z, X) segments: a line as itself, an arc in 16 chords (in the ZX plane,
+    counterclockwise is the angle from +Z towards +X increasing)."""
+    a = (move["start"]["Z"], move["start"]["X"])
+    b = (move["end"]["Z"], move["end"]["X"])
+    if move["kind"] != "arc":
+        return [(a, b)]
+    cz, cx = move["center"]["Z"], move["center"]["X"]
+    t0 = math.atan2(a[1] - cx, a[0] - cz)
+    sweep = math.atan2(b[1] - cx, b[0] - cz) - t0
+    if move["dir"] == "ccw":
+        while sweep <= 0:
+            sweep += 2 * math.pi
+    else:
+        while sweep >= 0:
+            sweep -= 2 * math.pi
+    r = math.hypot(a[0] - cz, a[1] - cx)
+    points = [a] + [(cz + r * math.cos(t0 + sweep * k / 16), cx + r * math.sin(t0 + sweep * k / 16))
+                    for k in range(1, 16)] + [b]
+    return list(zip(points, points[1:]))
+
+
 def check_program(path: pathlib.Path, moves: list) -> list:
     problems = []
     for m in moves:
@@ -59,19 +83,24 @@ def check_program(path: pathlib.Path, moves: list) -> list:
         first, last = shape_lines(text, cycle.group(1), cycle.group(2))
         if first is None or last is None:
             continue
-        shape = [((m["start"]["Z"], m["start"]["X"]), (m["end"]["Z"], m["end"]["X"]))
-                 for m in moves if first <= m["line"] <= last and m["kind"] == "linear"]
-        rough = [m for m in moves if m["line"] == number and m["kind"] == "linear"]
+        shape = [seg for m in moves if first <= m["line"] <= last and m["kind"] in ("linear", "arc")
+                 for seg in segments_of(m)]
+        rough = [m for m in moves if m["line"] == number and m["kind"] in ("linear", "arc")]
         if not shape or not rough:
             continue
-        start_x = rough[0]["start"]["X"]
+        # Outside turning when the cycle starts above the shape: for G71 where its first feed
+        # begins (on A's level), for G73 at A itself (its first feed begins on the moved shape).
+        pattern = re.search(r"G0?73", line.split("(")[0], re.I) is not None
+        start_x = (next(m for m in moves if m["line"] == number and "start" in m) if pattern else rough[0])["start"]["X"]
         if start_x < max(max(a[1], b[1]) for a, b in shape) - 1e-9:
             continue  # an inside shape or a start below it: the check is for outside turning
         for m in rough:
-            z, x = m["end"]["Z"], m["end"]["X"]
-            limit = profile_x_at(shape, z)
-            if limit is not None and x < limit - 1e-6:
-                problems.append(f"line {number}: roughing reaches X{x:.4f} at Z{z:.4f}, inside the shape (X{limit:.4f})")
+            for _, (z, x) in segments_of(m):
+                limit = profile_x_at(shape, z)
+                if limit is not None and x < limit - 1e-6:
+                    problems.append(
+                        f"line {number}: roughing reaches X{x:.4f} at Z{z:.4f}, inside the shape (X{limit:.4f})")
+                    break
     return problems
 
 
@@ -99,7 +128,9 @@ def main() -> int:
         run = subprocess.run([args.nckit, "moves", str(program), "--machine", str(HERE / machine), "--json"],
                              capture_output=True, text=True, timeout=120)
         if run.returncode != 0:
-            first = run.stderr.strip().splitlines()[0] if run.stderr.strip() else f"exit {run.returncode}"
+            lines = run.stderr.strip().splitlines()
+            errors = [line for line in lines if ": error:" in line]  # warnings (a tape leader) may come first
+            first = (errors or lines or [f"exit {run.returncode}"])[0]
             if args.list:
                 print(f"| {program.name} | refused | {first.replace(str(HERE) + '/', '')} |")
             continue
