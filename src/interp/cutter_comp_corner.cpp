@@ -129,7 +129,7 @@ std::optional<CompError> CutterCompensator::next_planar(Move move, std::vector<M
     auto b_off = interp::comp::offset(b, side_, radius_mm_);
     if (!b_off) {
         return error(move.where, "cutter-gouge",
-                     fmt::format("the tool radius {:.4f} mm is not smaller than the radius {:.4f} mm of this arc, "
+                     fmt::format("the tool radius {:.4f} mm is larger than the radius {:.4f} mm of this arc, "
                                  "which the tool cuts from inside",
                                  radius_mm_, nckit::length(b.start - b.center)));
     }
@@ -147,7 +147,10 @@ std::optional<CompError> CutterCompensator::next_planar(Move move, std::vector<M
     } else if (kind == Corner::outside) {
         around = true;
     } else {
-        auto meet = a_off ? interp::comp::inside_corner(*a_off, *b_off, corner) : std::nullopt;
+        // After an arc shrunk to its centre the tool cannot turn further in: no crossing.
+        auto meet = a_off && !interp::comp::shrunk_to_center(*a_off)
+                        ? interp::comp::inside_corner(*a_off, *b_off, corner)
+                        : std::nullopt;
         if (!meet) {
             return error(move.where, "cutter-gouge",
                          fmt::format("the tool (radius {:.4f} mm) cannot reach into the inside corner between "
@@ -229,6 +232,12 @@ std::optional<CompError> CutterCompensator::next_planar(Move move, std::vector<M
         programmed_.rapid = std::get<Line>(move.what).rapid;
     }
     AxisVector from = tool_;
+    if (interp::comp::shrunk_to_center(*b_off)) {
+        // The tool pivots at the arc's centre: what is left is the straight move of the other
+        // axes (a helix's Z), or nothing.
+        const Arc& arc = std::get<Arc>(move.what);
+        move.what = Line{arc.from, arc.to, arc.feed, false, arc.path};
+    }
     place(move, p, from, b_off->end, programmed_.sweep_rad);
     tool_ = move.what.index() == 0 ? std::get<Line>(move.what).to : std::get<Arc>(move.what).to;
     held_.push_back(std::move(move));
