@@ -4,10 +4,11 @@
 Every program listed in programs.csv (CAM-post output in cam/, hand-written shop programs in
 shop/) is run three ways with the machine file the list names (mill.toml: numbers without a
 decimal point are whole units; haas.toml: they count least increments, as on a Haas or Fanuc
-control) and the tool table tools.tbl:
+control) and a copy of the tool table tools.tbl with the cutter sizes the program's own text
+states (program_tools.py, README.md "Tool data"):
 
 - `nckit check` — accepted when it exits 0;
-- `rs274 -g` with a copy of tools.tbl scaled by 1/25.4 (standalone rs274 reads tool tables as
+- `rs274 -g` with that table scaled by 1/25.4 (standalone rs274 reads tool tables as
   inches) — accepted when it exits 0;
 - where both accept, `nckit moves --json` is compared with rs274's motions by
   tests/programs/compare_linuxcnc.py (kind, end point, arc centre and direction, feed, source
