@@ -145,6 +145,7 @@ std::optional<Diagnostic> Executor::check_offset_change(GCode code, std::uint32_
     const Word* d = words_.word('D');
     const std::string what = starts_comp(code) ? fmt::format("G{:g}", code / 10.0) : std::string("D");
     const std::uint32_t column = d != nullptr ? d->column : code_column;
+    const double radius_before_mm = comp_radius_mm_;
     int number = modal_.tool.d_number;
     if (d != nullptr) {
         if (d->value != std::floor(d->value) || d->value < 0 || d->value > 99999999) {
@@ -169,6 +170,8 @@ std::optional<Diagnostic> Executor::check_offset_change(GCode code, std::uint32_
         return error(column, "cutter-comp",
                      fmt::format("D{} has radius 0: give G40 to end the compensation instead", number));
     }
+    // A D repeated with its own value (posts that write D on every block) changes nothing.
+    if (!starts_comp(code) && comp_radius_mm_ == radius_before_mm) comp_change_ = false;
     return std::nullopt;
 }
 

@@ -68,6 +68,12 @@ TEST(CutterCompOffsetChange, G41AgainWithTheSameOffsetStillRestarts) {
     EXPECT_EQ(t[7], "G1 X65.0000 Y5.0000 Z0.0000 F100.0000") << "X70 meets Y20 inside: x = 70 - 5";
 }
 
+TEST(CutterCompOffsetChange, TheSameDAgainChangesNothingEvenOnAnArc) {
+    const std::string contour = "G3 X60 Y10 R10\nG1 Y30\nG40 X70 Y40\n";
+    Texts plain = texts(std::string(head) + contour, mill_with_offsets());
+    EXPECT_EQ(texts(std::string(head) + "D1 " + contour, mill_with_offsets()), plain);
+}
+
 TEST(CutterCompOffsetChange, BeforeTheFirstPlanarMoveTheStartUpTakesTheNewOffset) {
     Texts t = texts("G0 X-10 Y0 Z0\nG41 D1\nG41 D2\nG1 X0 F100\nX20\nG40 X30\n", mill_with_offsets());
     ASSERT_EQ(t.size(), 4U);
