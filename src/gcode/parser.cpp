@@ -101,7 +101,12 @@ private:
                 return std::nullopt;
             }
             if (line_[pos_] == '(') {
-                return error(column(), "syntax", "nested comment: '(' inside a comment");
+                // RS-274/NGC and LinuxCNC refuse it; no Fanuc or Haas manual says whether the
+                // first ')' ends the comment, so guessing could run the rest of it as code.
+                return error(column(), "syntax",
+                             fmt::format("'(' inside a comment (opened at column {}): comments do not nest; "
+                                         "write the inner parentheses another way, such as [ ]",
+                                         open));
             }
         }
         return error(open, "syntax", "comment is not closed: '(' without ')'");

@@ -42,10 +42,26 @@ void CutterCompensator::start(CompSide side, double radius_mm, Plane plane, cons
     mode_ = Mode::waiting;
     side_ = side == CompSide::left ? 1 : -1;
     radius_mm_ = radius_mm;
+    held_from_radius_mm_ = radius_mm;
     plane_ = plane;
     held_.clear();
     held_start_up_ = false;
+    held_restart_ = false;
     has_before_ = false;
+    pending_radius_mm_.reset();
+    pending_restart_ = false;
+}
+
+void CutterCompensator::change_offset(double radius_mm, bool restart) {
+    if (mode_ == Mode::waiting) {
+        // No move in the plane yet: the start-up move takes the new radius.
+        radius_mm_ = radius_mm;
+        held_from_radius_mm_ = radius_mm;
+        return;
+    }
+    pending_radius_mm_ = radius_mm;
+    // A restart stays asked for when a D word alone follows it before the next planar move.
+    pending_restart_ = pending_restart_ || restart;
 }
 
 bool CutterCompensator::moves_in_plane(const Move& move) const {
@@ -102,7 +118,10 @@ std::optional<CompError> CutterCompensator::add(Move move, std::vector<Move>& ou
                                          "compensation is on",
                                          max_held));
             }
-            if (moves_in_plane(move)) return next_planar(std::move(move), out);
+            if (moves_in_plane(move)) {
+                if (pending_radius_mm_) return next_with_new_offset(std::move(move), out);
+                return next_planar(std::move(move), out);
+            }
             if (is_line) {
                 hold_off_plane(std::move(move));
             } else {
@@ -140,6 +159,8 @@ std::optional<CompError> CutterCompensator::start_up(Move move, std::vector<Move
     held_.clear();
     held_.push_back(std::move(move));
     held_start_up_ = true;
+    held_restart_ = false;
+    held_from_radius_mm_ = radius_mm_;
     mode_ = Mode::on;
     return std::nullopt;
 }
@@ -188,6 +209,7 @@ std::optional<CompError> CutterCompensator::release(std::vector<Move>& out) {
     }
     emit_held(out);
     held_start_up_ = false;
+    held_restart_ = false;
     return std::nullopt;
 }
 
@@ -209,6 +231,8 @@ void CutterCompensator::emit(Move move, bool keep_start, std::vector<Move>& out)
 }
 
 std::optional<CompError> CutterCompensator::cancel(std::vector<Move>& out) {
+    pending_radius_mm_.reset();  // the exit move leaves from where the held move ends
+    pending_restart_ = false;
     if (mode_ == Mode::waiting) {
         mode_ = Mode::off;
         return std::nullopt;
@@ -220,6 +244,8 @@ std::optional<CompError> CutterCompensator::cancel(std::vector<Move>& out) {
 }
 
 std::optional<CompError> CutterCompensator::finish(std::vector<Move>& out) {
+    pending_radius_mm_.reset();
+    pending_restart_ = false;
     if (mode_ == Mode::on) {
         if (auto e = release(out)) return e;
     }

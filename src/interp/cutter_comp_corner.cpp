@@ -1,5 +1,6 @@
 // The corner between the held planar move and the next one: it settles where the held move ends
 // and where the next one starts (and, on an outside corner, adds the path around it).
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -96,7 +97,8 @@ std::optional<CompError> CutterCompensator::check_clearance(const Segment& eleme
     PlaneAxes p = plane_axes(plane_);
     // Corners within the tangent tolerance leave the next move's start up to r(1 - cos 0.05)
     // nearer than r: that much is allowed.
-    double limit = radius_mm_ * std::cos(interp::comp::corner_tolerance_rad) - 1e-7;
+    // A move whose offset changed in it starts at the old radius: the smaller of the two holds.
+    double limit = std::min(radius_mm_, held_from_radius_mm_) * std::cos(interp::comp::corner_tolerance_rad) - 1e-7;
     for (Vec2 point : samples_of(held_.front(), p)) {
         if (interp::comp::distance_to(point, element) < limit) {
             return error(where, "cutter-gouge",
@@ -127,7 +129,7 @@ std::optional<CompError> CutterCompensator::next_planar(Move move, std::vector<M
     auto b_off = interp::comp::offset(b, side_, radius_mm_);
     if (!b_off) {
         return error(move.where, "cutter-gouge",
-                     fmt::format("the tool radius {:.4f} mm is not smaller than the radius {:.4f} mm of this arc, "
+                     fmt::format("the tool radius {:.4f} mm is larger than the radius {:.4f} mm of this arc, "
                                  "which the tool cuts from inside",
                                  radius_mm_, nckit::length(b.start - b.center)));
     }
@@ -145,7 +147,10 @@ std::optional<CompError> CutterCompensator::next_planar(Move move, std::vector<M
     } else if (kind == Corner::outside) {
         around = true;
     } else {
-        auto meet = a_off ? interp::comp::inside_corner(*a_off, *b_off, corner) : std::nullopt;
+        // After an arc shrunk to its centre the tool cannot turn further in: no crossing.
+        auto meet = a_off && !interp::comp::shrunk_to_center(*a_off)
+                        ? interp::comp::inside_corner(*a_off, *b_off, corner)
+                        : std::nullopt;
         if (!meet) {
             return error(move.where, "cutter-gouge",
                          fmt::format("the tool (radius {:.4f} mm) cannot reach into the inside corner between "
@@ -164,7 +169,7 @@ std::optional<CompError> CutterCompensator::next_planar(Move move, std::vector<M
         place(held, p, arc.from, a_end, programmed_.sweep_rad);
     }
     if (auto e = check_held(move.where)) return e;
-    if (!held_start_up_) {
+    if (!held_start_up_ && !held_restart_) {
         if (auto e = check_clearance(b, move.where, "this block")) return e;
     }
     if (has_before_ && !held_start_up_) {
@@ -227,10 +232,18 @@ std::optional<CompError> CutterCompensator::next_planar(Move move, std::vector<M
         programmed_.rapid = std::get<Line>(move.what).rapid;
     }
     AxisVector from = tool_;
+    if (interp::comp::shrunk_to_center(*b_off)) {
+        // The tool pivots at the arc's centre: what is left is the straight move of the other
+        // axes (a helix's Z), or nothing.
+        const Arc& arc = std::get<Arc>(move.what);
+        move.what = Line{arc.from, arc.to, arc.feed, false, arc.path};
+    }
     place(move, p, from, b_off->end, programmed_.sweep_rad);
     tool_ = move.what.index() == 0 ? std::get<Line>(move.what).to : std::get<Arc>(move.what).to;
     held_.push_back(std::move(move));
     held_start_up_ = false;
+    held_restart_ = false;
+    held_from_radius_mm_ = radius_mm_;
     return std::nullopt;
 }
 

@@ -61,9 +61,14 @@ std::optional<Segment> offset(const Segment& s, int side, double r) {
     double r_start = length(s.start - s.center);
     double r_end = length(s.end - s.center);
     double grow = tool_inside(s, side) ? -r : r;
-    if (r_start + grow <= 0 || r_end + grow <= 0) return std::nullopt;
-    o.start = s.center + ((r_start + grow) / r_start) * (s.start - s.center);
-    o.end = s.center + ((r_end + grow) / r_end) * (s.end - s.center);
+    // An inside arc of the tool's own radius shrinks to its centre, where the tool pivots (as
+    // LinuxCNC runs it); only a smaller arc cannot be cut.
+    auto shrunk = [&](double radius) { return std::abs(radius + grow) <= same_radius_mm ? 0.0 : radius + grow; };
+    const double new_start = shrunk(r_start);
+    const double new_end = shrunk(r_end);
+    if (new_start < 0 || new_end < 0) return std::nullopt;
+    o.start = s.center + (new_start / r_start) * (s.start - s.center);
+    o.end = s.center + (new_end / r_end) * (s.end - s.center);
     return o;
 }
 

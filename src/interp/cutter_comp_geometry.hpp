@@ -27,9 +27,18 @@ struct Segment {
     return side * arc.turn > 0;
 }
 
+//! Radii closer than this are the same (mm): an inside arc of the tool's radius.
+inline constexpr double same_radius_mm = 1e-6;
+
 //! The segment moved r to `side`: a line shifts along its normal, an arc keeps its centre and
-//! its radius grows or shrinks by r. Nothing when an inside arc's radius is not larger than r.
+//! its radius grows or shrinks by r. An inside arc of radius r shrinks to its centre (both ends
+//! on it); nothing when an inside arc's radius is smaller than r.
 [[nodiscard]] std::optional<Segment> offset(const Segment& s, int side, double r);
+
+//! An offset arc shrunk to its centre at either end (offset() of an arc of the tool's radius).
+[[nodiscard]] inline bool shrunk_to_center(const Segment& s) {
+    return s.arc && (s.start == s.center || s.end == s.center);
+}
 
 enum class Corner { tangent, outside, inside };
 

@@ -94,7 +94,7 @@ std::optional<Diagnostic> Executor::run(const Block& block, std::vector<Move>& o
     std::optional<HeldCorner> saved_corner;
     if (corner_involved) saved_corner = corner_;
     std::optional<CutterCompensator> saved_comp;
-    if (comp_.engaged() || words_.group(ModalGroup::cutter_comp) >= 0) saved_comp = comp_;
+    if (comp_.engaged() || comp_change_ || words_.group(ModalGroup::cutter_comp) >= 0) saved_comp = comp_;
     AxisVector saved_position = position_;
     const ProgramTransform saved_transform = transform_;
     const AxisVector saved_programmed = programmed_;

@@ -83,6 +83,9 @@ private:
     std::optional<Diagnostic> check_cutter_comp();
     std::optional<Diagnostic> compensate(std::vector<Move>& out, std::size_t first, bool program_end);
     [[nodiscard]] bool block_starts_comp() const;
+    [[nodiscard]] bool changes_offset_in_offset_mode(GCode code) const;
+    std::optional<Diagnostic> check_offset_change(GCode code, std::uint32_t code_column);
+    std::optional<Diagnostic> read_comp_radius(int number, std::uint32_t column);
     [[nodiscard]] std::optional<double> tool_radius_mm(int d_number) const;
 
     // Values of words, converted to mm / deg / s (executor.cpp).
@@ -204,6 +207,7 @@ private:
     CompSide comp_side_ = CompSide::left;  //!< from check_cutter_comp() for this block's G41/G42
     double comp_radius_mm_ = 0;            //!< likewise, mm
     AxisVector comp_tip_shift_;            //!< a lathe tool's imaginary tip less its nose centre (G41/G42), mm
+    bool comp_change_ = false;             //!< this block changes the offset in offset mode (check_offset_change())
 
     SequenceReader sequence_reader_;
     bool skip_past_sequence_ = false;

@@ -156,7 +156,9 @@ TEST(Parser, UnclosedCommentIsAnErrorAtItsParenthesis) {
 }
 
 TEST(Parser, NestedCommentIsAnErrorAtTheInnerParenthesis) {
-    EXPECT_EQ(error("G1 (a (b) c)"), "syntax 7: nested comment: '(' inside a comment");
+    EXPECT_EQ(error("G1 (a (b) c)"),
+              "syntax 7: '(' inside a comment (opened at column 4): comments do not nest; write the inner "
+              "parentheses another way, such as [ ]");
 }
 
 TEST(Parser, ClosingParenthesisAloneIsAnError) {

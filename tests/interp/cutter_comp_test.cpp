@@ -31,6 +31,25 @@ TEST(CutterComp, RightSideAndInsideArcShrinkTheRadius) {
     EXPECT_EQ(t[2], "G2 X17.0000 Y0.0000 Z0.0000 CX10.0000 CY0.0000 CZ0.0000 F100.0000");
 }
 
+TEST(CutterComp, InsideArcOfTheToolsRadiusPivotsAtItsCentre) {
+    // Radius 5 inside a G3 of radius 5 centred on (40, 5): the tool stays on the centre (a move
+    // that goes nowhere), then rolls around the arc's end (45, 5) onto the next line, as rs274.
+    Texts t = texts("G0 X-20 Y0 Z0\nG41.1 D10 G1 X0 Y0 F100\nX40\nG3 X45 Y5 R5\nG1 X60\nG40 X70 Y-10\n");
+    ASSERT_EQ(t.size(), 7U);
+    EXPECT_EQ(t[2], "G1 X40.0000 Y5.0000 Z0.0000 F100.0000");
+    EXPECT_EQ(t[3], "G1 X40.0000 Y5.0000 Z0.0000 F100.0000") << "the arc shrunk to its centre";
+    EXPECT_EQ(t[4], "G2 X45.0000 Y10.0000 Z0.0000 CX45.0000 CY5.0000 CZ0.0000 F100.0000");
+    EXPECT_EQ(t[5], "G1 X60.0000 Y10.0000 Z0.0000 F100.0000");
+    // A helix of that radius keeps its Z: a plunge on the centre.
+    std::vector<Line> lines =
+        only<Line>(moves_of("G0 X-20 Y0 Z0\nG41.1 D10 G1 X0 Y0 F100\nX40\nG3 X45 Y5 Z-2 R5\n"
+                            "G1 X60\nG40 X70 Y-10\n"));
+    ASSERT_GE(lines.size(), 4U);
+    EXPECT_DOUBLE_EQ(lines[3].from[Axis::Z], 0.0);
+    EXPECT_DOUBLE_EQ(lines[3].to[Axis::Z], -2.0);
+    EXPECT_DOUBLE_EQ(lines[3].to[Axis::X], 40.0);
+}
+
 TEST(CutterComp, InchDiameterIsReadInProgramUnits) {
     Texts t = texts("G20 G0 X-1 Y0 Z0\nG41.1 D0.5 G1 X0 Y0 F10\nX2\nG40 X3\n");
     ASSERT_EQ(t.size(), 4U);
@@ -135,7 +154,7 @@ TEST(CutterCompErrors, RadiusLargerThanAnInsideArc) {
     Diagnostic d = error_of("G0 X0 Y-20\nG42.1 D24 G1 X0 Y0 F100\nG2 X20 Y0 R10\nG1 Y-10\n");
     EXPECT_EQ(where(d), "cutter-gouge 3:1");
     EXPECT_EQ(d.message,
-              "the tool radius 12.0000 mm is not smaller than the radius 10.0000 mm of this arc, "
+              "the tool radius 12.0000 mm is larger than the radius 10.0000 mm of this arc, "
               "which the tool cuts from inside");
 }
 

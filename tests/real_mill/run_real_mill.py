@@ -4,10 +4,11 @@
 Every program listed in programs.csv (CAM-post output in cam/, hand-written shop programs in
 shop/) is run three ways with the machine file the list names (mill.toml: numbers without a
 decimal point are whole units; haas.toml: they count least increments, as on a Haas or Fanuc
-control) and the tool table tools.tbl:
+control) and a copy of the tool table tools.tbl with the cutter sizes the program's own text
+states (program_tools.py, README.md "Tool data"):
 
 - `nckit check` — accepted when it exits 0;
-- `rs274 -g` with a copy of tools.tbl scaled by 1/25.4 (standalone rs274 reads tool tables as
+- `rs274 -g` with that table scaled by 1/25.4 (standalone rs274 reads tool tables as
   inches) — accepted when it exits 0;
 - where both accept, `nckit moves --json` is compared with rs274's motions by
   tests/programs/compare_linuxcnc.py (kind, end point, arc centre and direction, feed, source
@@ -19,7 +20,7 @@ LinuxCNC, fails the run. A program the list marks `differs` names the dialect di
 note column. Finally a table of acceptance by category is printed (the figures in
 BENCHMARKS.md).
 
-Usage: run_real_mill.py [--nckit BIN] [--rs274 BIN] [--markdown] [NAME ...]
+Usage: run_real_mill.py [--nckit BIN] [--rs274 BIN] [--markdown] [--show-tools] [NAME ...]
 Exit status: 0 when every program behaves as the list says, 1 otherwise.
 """
 
@@ -37,6 +38,7 @@ from pathlib import Path
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parent / "programs"))
 import compare_linuxcnc as cl  # noqa: E402
+import program_tools  # noqa: E402
 
 # compare_linuxcnc's own sanity check of rs274's arcs (start and end radius equal to 1e-4) holds
 # for the programs written for it; real CAM output rounded to 3-4 decimals runs within LinuxCNC's
@@ -48,9 +50,19 @@ _drop_zero_length = cl.drop_zero_length
 def drop_zero_length_from_home(motions, tol=1e-6):
     """compare_linuxcnc's drop_zero_length, with the machine's start (home, all axes 0 on both
     sides) as the position before the first motion, so a first traverse to where the machine
-    already stands goes as well."""
+    already stands goes as well. An arc of radius 0 that ends where it starts goes too: rs274
+    writes one where the tool pivots inside an arc of its own radius (nckit writes a straight move
+    that goes nowhere)."""
     home = cl.Motion(kind="rapid", end={a: 0.0 for a in cl.ALL_AXES})
-    return _drop_zero_length([home, *motions], tol)[1:]
+    kept, prev = [], None
+    for mo in _drop_zero_length([home, *motions], tol)[1:]:
+        pivot = (mo.kind == "arc" and prev is not None and mo.center
+                 and all(abs(mo.end[a] - prev[a]) <= tol for a in mo.end if a in prev)
+                 and all(abs(mo.center[a] - mo.end[a]) <= tol for a in mo.center if a in mo.end))
+        if not pivot:
+            kept.append(mo)
+            prev = mo.end
+    return kept
 
 
 cl.drop_zero_length = drop_zero_length_from_home
@@ -95,9 +107,9 @@ def library_options() -> list[str]:
     return ["--library", str(library)] if library.is_dir() else []
 
 
-def nckit_check(nckit: str, entry: Entry) -> tuple[bool, str]:
+def nckit_check(nckit: str, entry: Entry, tools: Path) -> tuple[bool, str]:
     proc = subprocess.run([nckit, "check", str(entry.path), "--machine", str(entry.machine),
-                           *library_options()],
+                           "--tools", str(tools), *library_options()],
                           capture_output=True, text=True, timeout=TIMEOUT_S,
                           stdin=subprocess.DEVNULL)
     first = next((l for l in proc.stderr.splitlines() if ": error:" in l), "")
@@ -106,9 +118,20 @@ def nckit_check(nckit: str, entry: Entry) -> tuple[bool, str]:
     return proc.returncode == 0, first
 
 
+def program_tool_table(entry: Entry, workdir: Path, show: bool) -> Path:
+    """tools.tbl with the cutter sizes the program's own text states (program_tools.py)."""
+    data = program_tools.derive(entry.path, entry.system == "Fusion 360")
+    if show:
+        for number, reason in sorted(data.reasons.items()):
+            print(f"     {entry.category}/{entry.path.name}: D{number} = "
+                  f"{data.diameters_mm[number]:.4f} mm diameter ({reason})")
+    return program_tools.write_table(HERE / "tools.tbl", data, workdir / "program_tools.tbl")
+
+
 def run_one(entry: Entry, args, workdir: Path) -> Outcome:
-    accepted, first_error = nckit_check(args.nckit, entry)
-    setup = cl.Setup(machine_file=entry.machine, tools_file=HERE / "tools.tbl")
+    tools = program_tool_table(entry, workdir, args.show_tools)
+    accepted, first_error = nckit_check(args.nckit, entry, tools)
+    setup = cl.Setup(machine_file=entry.machine, tools_file=tools)
     try:
         ref = cl.reference(entry.path, args.rs274, HERE, workdir, TIMEOUT_S, setup=setup)
     except cl.ProgramError as e:
@@ -162,6 +185,8 @@ def main() -> int:
     ap.add_argument("--nckit", default=str(cl.DEFAULT_NCKIT))
     ap.add_argument("--rs274", default=None)
     ap.add_argument("--markdown", action="store_true", help="print the summary as a table")
+    ap.add_argument("--show-tools", action="store_true",
+                    help="print the D offsets each program's own tool data set, and why")
     args = ap.parse_args()
     args.nckit = str(Path(args.nckit).resolve())
     args.rs274 = args.rs274 or shutil.which("rs274")

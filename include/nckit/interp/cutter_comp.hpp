@@ -40,6 +40,13 @@ public:
     //! `tip_shift` (a lathe tool's imaginary tip less its nose centre, mm) moves the compensated
     //! path, whose points are nose centres, onto the point the offsets measure.
     void start(CompSide side, double radius_mm, Plane plane, const AxisVector& tip_shift = AxisVector{});
+    //! A new radius in offset mode with no G40 between (the Fanuc dialect: G41/G42 again on the
+    //! same side, or a D word alone). The corner before the next planar move is still made with
+    //! the old radius; that move ends with the new one, as Fanuc's controls change the offset
+    //! vector over the block. `restart` (G41/G42 given again): the held move ends square to its
+    //! own end, as before a G40, and the next move runs from there with no corner between them.
+    //! That next move must be a line (checked in add()).
+    void change_offset(double radius_mm, bool restart);
     //! G40: the held move ends r from the contour, perpendicular to its end, and goes out; the
     //! next move runs straight from there to its programmed end point (it must be a line).
     [[nodiscard]] std::optional<CompError> cancel(std::vector<Move>& out);
@@ -67,6 +74,9 @@ private:
 
     std::optional<CompError> start_up(Move move, std::vector<Move>& out);
     std::optional<CompError> next_planar(Move move, std::vector<Move>& out);
+    //! next_planar() for the first planar move after change_offset() (cutter_comp_change.cpp).
+    std::optional<CompError> next_with_new_offset(Move move, std::vector<Move>& out);
+    void hold_restarted(Move move);
     std::optional<CompError> release(std::vector<Move>& out);  //!< held move keeps its end
     std::optional<CompError> check_held(const SourceLocation& next) const;
     std::optional<CompError> check_clearance(const interp::comp::Segment& element, const SourceLocation& where,
@@ -83,12 +93,16 @@ private:
     int side_ = 1;  //!< +1 left (G41), -1 right (G42)
     double radius_mm_ = 0;
     Plane plane_ = Plane::xy;
-    AxisVector tool_;               //!< where the tool is after everything held (nose centre), mm / deg
-    AxisVector tip_shift_;          //!< imaginary tip less nose centre of a lathe tool, mm
-    Programmed programmed_;         //!< the held planar move as programmed
-    Programmed before_;             //!< the planar move before it, as programmed
-    bool has_before_ = false;       //!< before_ is a contour move (not the start-up move)
-    bool held_start_up_ = false;    //!< the held move is the start-up block
+    AxisVector tool_;                          //!< where the tool is after everything held (nose centre), mm / deg
+    AxisVector tip_shift_;                     //!< imaginary tip less nose centre of a lathe tool, mm
+    Programmed programmed_;                    //!< the held planar move as programmed
+    Programmed before_;                        //!< the planar move before it, as programmed
+    bool has_before_ = false;                  //!< before_ is a contour move (not the start-up move)
+    bool held_start_up_ = false;               //!< the held move is the start-up block
+    bool held_restart_ = false;                //!< the held move starts square to the move before (G41 again)
+    double held_from_radius_mm_ = 0;           //!< the radius at the held move's start (differs after a change)
+    std::optional<double> pending_radius_mm_;  //!< change_offset() waiting for the next planar move
+    bool pending_restart_ = false;
     bool leave_from_tool_ = false;  //!< G41/G42 came before the exit move after G40
     std::vector<Move> held_;        //!< [0]: the held planar move, compensated; then what followed it
 };
