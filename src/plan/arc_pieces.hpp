@@ -48,4 +48,14 @@ inline constexpr double jerk_limited_coupling_share = 0.8;
 [[nodiscard]] bool split_arc_jerk_limited(const PathSegment& arc, const MachineConfig& machine, double feed_mm_s,
                                           std::vector<ArcPiece>& out);
 
+//! Pieces a jerk-limited transition next to an arc is cut into (split_transition_jerk_limited).
+inline constexpr int transition_pieces = 16;
+
+//! S-curve plans only. Cuts a quintic transition (make_transition) into transition_pieces pieces
+//! with limits of their own, by the same rule as split_arc_jerk_limited: where it joins arcs
+//! turning opposite ways its curvature runs from one arc's through 0 to the other's, and the
+//! pieces let the speed follow what each part allows instead of the whole curve's worst case.
+[[nodiscard]] bool split_transition_jerk_limited(const PathSegment& curve, const MachineConfig& machine,
+                                                 double feed_mm_s, std::vector<ArcPiece>& out);
+
 }  // namespace nckit::plan_detail

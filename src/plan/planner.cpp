@@ -97,11 +97,23 @@ struct Planner::Impl {
         if (!pending) return;
         Pending& p = *pending;
         if (p.entry) {
-            const ProfileLimits limits =
-                segment_limits(p.entry->curve, machine, p.entry_feed_mm_s, kind,
-                               kind == ProfileKind::trapezoid ? trapezoid_blend_normal_share : 0.5);
-            add_segment(std::move(p.entry->curve), limits, limits.max_velocity, p.entry_where, p.entry_number, true,
-                        {});
+            // Under a jerk limit a transition that joins an arc is cut into pieces whose speed
+            // follows its curvature (arc_pieces.hpp); transitions between lines stay whole.
+            const bool next_to_arc = p.entry->replaced_before.shape == SegmentShape::arc ||
+                                     p.entry->replaced_after.shape == SegmentShape::arc;
+            if (kind == ProfileKind::scurve && next_to_arc &&
+                plan_detail::split_transition_jerk_limited(p.entry->curve, machine, p.entry_feed_mm_s, arc_pieces)) {
+                for (plan_detail::ArcPiece& piece : arc_pieces) {
+                    add_segment(std::move(piece.path), piece.limits, piece.limits.max_velocity, p.entry_where,
+                                p.entry_number, true, {});
+                }
+            } else {
+                const ProfileLimits limits =
+                    segment_limits(p.entry->curve, machine, p.entry_feed_mm_s, kind,
+                                   kind == ProfileKind::trapezoid ? trapezoid_blend_normal_share : 0.5);
+                add_segment(std::move(p.entry->curve), limits, limits.max_velocity, p.entry_where, p.entry_number, true,
+                            {});
+            }
             p.entry.reset();
         }
         if (!(p.path.length > min_trimmed_length)) {
