@@ -162,26 +162,27 @@ bool split_arc(const PathSegment& arc, const MachineConfig& machine, double feed
     return true;
 }
 
-bool split_arc_jerk_limited(const PathSegment& arc, const MachineConfig& machine, double feed_mm_s,
-                            std::vector<ArcPiece>& out) {
-    if (arc.shape != SegmentShape::arc || !(arc.length > 0)) return false;
-    const double turns = std::abs(arc.sweep_rad()) / (2.0 * M_PI);
-    const int n = static_cast<int>(std::min<double>(max_arc_pieces, std::ceil(turns * arc_pieces_per_turn)));
+namespace {
+
+//! Pieces of `segment` under a jerk limit, as split_arc_jerk_limited describes, n of them.
+bool split_jerk_limited(const PathSegment& segment, int n, const MachineConfig& machine, double feed_mm_s,
+                        std::vector<ArcPiece>& out) {
     if (n < 2) return false;
-    // Only where the curvature sets the speed: the whole arc's limits are below the feed and
-    // the axes' speeds (else the arc runs at the feed whole, and keeps more acceleration).
-    const DerivativeBounds whole = derivative_bounds(arc);
+    // Only where the curvature sets the speed: the whole segment's limits are below the feed and
+    // the axes' speeds (else it runs at the feed whole, and keeps more acceleration).
+    const DerivativeBounds whole = derivative_bounds(segment);
     double cruise = feed_mm_s / whole.speed_factor;
     for (const AxisConfig& axis : machine.axes) {
         const std::size_t i = index(axis.axis);
         if (whole.d1[i] > 0) cruise = std::min(cruise, axis.max_velocity / whole.d1[i]);
     }
-    const ProfileLimits as_one = segment_limits(arc, machine, feed_mm_s, ProfileKind::scurve);
+    const ProfileLimits as_one = segment_limits(segment, machine, feed_mm_s, ProfileKind::scurve);
     if (!(as_one.max_velocity < cruise * (1.0 - 1e-9))) return false;
-    // One path acceleration and jerk for the whole arc, so that its pieces share S-curve runs:
-    // jerk_limited_jerk_share of each axis's jerk for j, and for a jerk_limited_acceleration_share
-    // of its acceleration, at most what leaves jerk_limited_coupling_share of its jerk to the
-    // coupling term 3·d2·v·a at the speed the curvature alone allows (sqrt(amax/d2)).
+    // One path acceleration and jerk for the whole segment, so that its pieces share S-curve
+    // runs: jerk_limited_jerk_share of each axis's jerk for j, and for a
+    // jerk_limited_acceleration_share of its acceleration, at most what leaves
+    // jerk_limited_coupling_share of its jerk to the coupling term 3·d2·v·a at the speed the
+    // curvature alone allows (sqrt(amax/d2)).
     double a = inf;
     double j = inf;
     for (const AxisConfig& axis : machine.axes) {
@@ -196,22 +197,39 @@ bool split_arc_jerk_limited(const PathSegment& arc, const MachineConfig& machine
         }
     }
     if (!std::isfinite(a) || !std::isfinite(j)) return false;
-    const double piece_length = arc.length / n;
+    const double piece_length = segment.length / n;
     out.resize(static_cast<std::size_t>(n));
     double fastest = 0;
     for (int k = 0; k < n; ++k) {
         ArcPiece& piece = out[static_cast<std::size_t>(k)];
         const double start = k * piece_length;
-        piece.path = trim_start(arc, start);
-        piece.path.length = k + 1 == n ? arc.length - start : piece_length;
+        piece.path = trim_start(segment, start);
+        piece.path.length = k + 1 == n ? segment.length - start : piece_length;
         const DerivativeBounds b = derivative_bounds(piece.path);
         piece.limits.max_velocity = jerk_limited_speed(b, machine, feed_mm_s, a, j);
         piece.limits.max_acceleration = a;
         piece.limits.max_jerk = j;
         fastest = std::max(fastest, piece.limits.max_velocity);
     }
-    // Pieces slower than the whole arc everywhere (a short arc, a tight jerk budget): keep it whole.
+    // Pieces slower than the whole segment everywhere (a short arc, a tight jerk budget): keep
+    // it whole.
     return fastest > as_one.max_velocity;
+}
+
+}  // namespace
+
+bool split_arc_jerk_limited(const PathSegment& arc, const MachineConfig& machine, double feed_mm_s,
+                            std::vector<ArcPiece>& out) {
+    if (arc.shape != SegmentShape::arc || !(arc.length > 0)) return false;
+    const double turns = std::abs(arc.sweep_rad()) / (2.0 * M_PI);
+    const int n = static_cast<int>(std::min<double>(max_arc_pieces, std::ceil(turns * arc_pieces_per_turn)));
+    return split_jerk_limited(arc, n, machine, feed_mm_s, out);
+}
+
+bool split_transition_jerk_limited(const PathSegment& curve, const MachineConfig& machine, double feed_mm_s,
+                                   std::vector<ArcPiece>& out) {
+    if (curve.shape != SegmentShape::quintic || !(curve.length > 0)) return false;
+    return split_jerk_limited(curve, transition_pieces, machine, feed_mm_s, out);
 }
 
 }  // namespace nckit::plan_detail

@@ -34,10 +34,10 @@ inline constexpr int max_arc_pieces = 1024;
 //! What every piece of a jerk-limited arc keeps for the path's own acceleration and jerk (the
 //! same on all pieces of an arc): shares of each axis's limits, chosen by measurement on the
 //! planner benchmark programs (docs/planner.md, "Speed along an arc (S-curve)").
-inline constexpr double jerk_limited_acceleration_share = 0.5;
+inline constexpr double jerk_limited_acceleration_share = 0.3;
 inline constexpr double jerk_limited_jerk_share = 0.5;
 //! At most this share of an axis's jerk goes to the coupling term 3·d2·v·a.
-inline constexpr double jerk_limited_coupling_share = 0.8;
+inline constexpr double jerk_limited_coupling_share = 0.6;
 
 //! S-curve plans only. Cuts `arc` into pieces as split_arc does, when the limits of the whole
 //! arc (segment_limits) keep it below its feed. Every piece gets the same path acceleration a and jerk j (shares of the
@@ -47,5 +47,15 @@ inline constexpr double jerk_limited_coupling_share = 0.8;
 //! Returns false when the arc is better left whole (out is then not to be used).
 [[nodiscard]] bool split_arc_jerk_limited(const PathSegment& arc, const MachineConfig& machine, double feed_mm_s,
                                           std::vector<ArcPiece>& out);
+
+//! Pieces a jerk-limited transition next to an arc is cut into (split_transition_jerk_limited).
+inline constexpr int transition_pieces = 16;
+
+//! S-curve plans only. Cuts a quintic transition (make_transition) into transition_pieces pieces
+//! with limits of their own, by the same rule as split_arc_jerk_limited: where it joins arcs
+//! turning opposite ways its curvature runs from one arc's through 0 to the other's, and the
+//! pieces let the speed follow what each part allows instead of the whole curve's worst case.
+[[nodiscard]] bool split_transition_jerk_limited(const PathSegment& curve, const MachineConfig& machine,
+                                                 double feed_mm_s, std::vector<ArcPiece>& out);
 
 }  // namespace nckit::plan_detail

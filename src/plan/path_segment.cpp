@@ -222,7 +222,22 @@ DerivativeBounds derivative_bounds(const PathSegment& g) {
 PathSegment trim_start(const PathSegment& g, double trim) {
     PathSegment out = g;
     out.length = g.length - trim;
-    if (g.radius_mm > 0) {
+    if (g.shape == SegmentShape::quintic) {
+        // The same polynomial expanded about s = trim (Taylor shift): the coefficient of s^k is
+        // the k-th derivative there over k!.
+        out.origin = position_at(g, trim);
+        const double t = trim;
+        for (std::size_t i = 0; i < 3; ++i) {
+            const double c2 = g.poly[0][i];
+            const double c3 = g.poly[1][i];
+            const double c4 = g.poly[2][i];
+            const double c5 = g.poly[3][i];
+            out.rate[i] = g.rate[i] + t * (2 * c2 + t * (3 * c3 + t * (4 * c4 + t * 5 * c5)));
+            out.poly[0][i] = c2 + t * (3 * c3 + t * (6 * c4 + t * 10 * c5));
+            out.poly[1][i] = c3 + t * (4 * c4 + t * 10 * c5);
+            out.poly[2][i] = c4 + t * 5 * c5;
+        }
+    } else if (g.radius_mm > 0) {
         // The centre's linear part moves on; the start direction turns by the angle swept.
         const double theta = g.angle_rate * trim;
         const double c = std::cos(theta);

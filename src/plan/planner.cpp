@@ -90,6 +90,20 @@ struct Planner::Impl {
         lookahead.add(std::move(s));
     }
 
+    //! A jerk-limited transition next to an arc, in pieces (the later ones continue it); false
+    //! when it is better left whole. Out of line: chains of lines never come here.
+    [[gnu::noinline]] bool add_transition_pieces(Pending& p) {
+        if (!plan_detail::split_transition_jerk_limited(p.entry->curve, machine, p.entry_feed_mm_s, arc_pieces)) {
+            return false;
+        }
+        for (std::size_t k = 0; k < arc_pieces.size(); ++k) {
+            plan_detail::ArcPiece& piece = arc_pieces[k];
+            add_segment(std::move(piece.path), piece.limits, piece.limits.max_velocity, p.entry_where, p.entry_number,
+                        true, {}, k > 0);
+        }
+        return true;
+    }
+
     //! The pending motion goes to the window, ending at rest when `stop`, else at most at its own
     //! speed limit (the next segment's lowers it further). An arc whose curvature sets its speed
     //! goes as pieces with limits of their own (arc_pieces.hpp).
@@ -97,11 +111,17 @@ struct Planner::Impl {
         if (!pending) return;
         Pending& p = *pending;
         if (p.entry) {
-            const ProfileLimits limits =
-                segment_limits(p.entry->curve, machine, p.entry_feed_mm_s, kind,
-                               kind == ProfileKind::trapezoid ? trapezoid_blend_normal_share : 0.5);
-            add_segment(std::move(p.entry->curve), limits, limits.max_velocity, p.entry_where, p.entry_number, true,
-                        {});
+            // Under a jerk limit a transition that joins an arc is cut into pieces whose speed
+            // follows its curvature (arc_pieces.hpp); transitions between lines stay whole.
+            const bool next_to_arc = p.entry->replaced_before.shape == SegmentShape::arc ||
+                                     p.entry->replaced_after.shape == SegmentShape::arc;
+            if (!(kind == ProfileKind::scurve && next_to_arc && add_transition_pieces(p))) {
+                const ProfileLimits limits =
+                    segment_limits(p.entry->curve, machine, p.entry_feed_mm_s, kind,
+                                   kind == ProfileKind::trapezoid ? trapezoid_blend_normal_share : 0.5);
+                add_segment(std::move(p.entry->curve), limits, limits.max_velocity, p.entry_where, p.entry_number, true,
+                            {});
+            }
             p.entry.reset();
         }
         if (!(p.path.length > min_trimmed_length)) {

@@ -322,3 +322,44 @@ TEST(SegmentLimits, BudgetHoldsAndBeatsFixedShares) {
 
 }  // namespace
 }  // namespace nckit
+
+namespace nckit {
+namespace {
+
+//! A quintic transition cut into pieces (S-curve transitions next to arcs are planned in
+//! pieces): every piece is the same curve from its cut on, position and three derivatives.
+TEST(PathSegment, TrimmedQuinticIsTheSameCurve) {
+    std::mt19937_64 random(14);
+    auto uniform = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(random); };
+    for (int trial = 0; trial < 20; ++trial) {
+        PathPoint a;
+        PathPoint b;
+        for (std::size_t i = 0; i < 3; ++i) {
+            a.position[i] = uniform(-5, 5);
+            b.position[i] = a.position[i] + uniform(-2, 2);
+            a.d1[i] = uniform(-1, 1);
+            b.d1[i] = uniform(-1, 1);
+            a.d2[i] = uniform(-0.5, 0.5);
+            b.d2[i] = uniform(-0.5, 0.5);
+        }
+        const PathSegment curve = make_quintic(a, b, uniform(0.5, 3), AxisVector{});
+        const double cut = uniform(0, curve.length);
+        const PathSegment piece = trim_start(curve, cut);
+        ASSERT_EQ(piece.shape, SegmentShape::quintic);
+        EXPECT_NEAR(piece.length, curve.length - cut, 1e-12);
+        for (int k = 0; k <= 10; ++k) {
+            const double s = piece.length * k / 10;
+            const PathPoint want = point_at(curve, cut + s);
+            const PathPoint got = point_at(piece, s);
+            for (std::size_t i = 0; i < 3; ++i) {
+                EXPECT_NEAR(got.position[i], want.position[i], 1e-9) << "trial " << trial;
+                EXPECT_NEAR(got.d1[i], want.d1[i], 1e-9) << "trial " << trial;
+                EXPECT_NEAR(got.d2[i], want.d2[i], 1e-8) << "trial " << trial;
+                EXPECT_NEAR(got.d3[i], want.d3[i], 1e-7) << "trial " << trial;
+            }
+        }
+    }
+}
+
+}  // namespace
+}  // namespace nckit

@@ -83,7 +83,7 @@ inline constexpr double min_move_length = 1e-9;
 [[nodiscard]] PathSegment make_quintic(const PathPoint& start, const PathPoint& end, double length,
                                        const AxisVector& other_rate);
 
-//! The segment without its first `trim` of s (0 <= trim <= length; lines and arcs).
+//! The segment without its first `trim` of s (0 <= trim <= length; lines, arcs and quintics).
 [[nodiscard]] PathSegment trim_start(const PathSegment& segment, double trim);
 
 //! A circular arc of XYZ through `start` with the given centre, starting along unit `tangent`

@@ -32,8 +32,9 @@ struct TrajectoryPiece {
     std::int64_t sequence_number = -1;  //!< the block's N number, -1 when none
     Io io;                              //!< io pieces only
     bool blend = false;                 //!< motion inserted by the planner to round a corner
-    //! The path of the same move as the motion piece before it goes on here (a trapezoid arc is
-    //! planned in pieces, docs/planner.md "Speed along an arc"): not a new move, no junction.
+    //! The path of the same move as the motion piece before it goes on here (an arc, or under a
+    //! jerk limit a transition next to an arc, is planned in pieces, docs/planner.md "Speed along
+    //! an arc"): not a new move, no junction.
     bool continues_move = false;
     bool waits_for_index = false;  //!< a dwell until the spindle's index pulse (before G32/G33)
     double index_angle_deg = 0;    //!< waits_for_index: the angle past the pulse it waits for (Q)
