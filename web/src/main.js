@@ -55,6 +55,9 @@ async function start(t0) {
     builtMs,
     buildMs: performance.now() - t0,
   });
+  // A large path's first frame was its preview: the full path is drawn with the next frame,
+  // while the page already answers input.
+  if (state.drawFullPath) state.drawFullPath();
   if (state.warmUp) await state.warmUp();
 }
 
