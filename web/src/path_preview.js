@@ -91,13 +91,18 @@ export function previewArrays(a, vertexEnd, tolerance) {
     for (let u = m > 0 ? vertexEnd[m - 1] : 0; u < vertexEnd[m]; u++) drawn[u] = 1;
   }
   // Within dot2 of a drawn segment among the MAX_SPAN on either side of vertex v, nearest
-  // first (a run of dots sits along the polyline of the move before or after it).
+  // first (a run of dots sits along the polyline of the move before or after it). The segment
+  // the previous dot was near is tried first: the next dot of a run is mostly near it too.
   const segmentCount = vertexPos.length / 3 - 1;
+  let hint = -1;
+  const near = (x, y, z, u) => u >= 0 && u < segmentCount && drawn[u] && distance2ToSegment(x, y, z, vertexPos, u, u + 1) <= dot2;
   function nearDrawn(x, y, z, v) {
+    if (hint >= v - MAX_SPAN && hint < v + MAX_SPAN) {
+      for (const u of [hint, hint - 1, hint + 1]) if (near(x, y, z, u)) return (hint = u), true;
+    }
     for (let k = 0; k < MAX_SPAN; k++) {
-      for (const u of [v - 1 - k, v + k]) {
-        if (u >= 0 && u < segmentCount && drawn[u] && distance2ToSegment(x, y, z, vertexPos, u, u + 1) <= dot2) return true;
-      }
+      if (near(x, y, z, v - 1 - k)) return (hint = v - 1 - k), true;
+      if (near(x, y, z, v + k)) return (hint = v + k), true;
     }
     return false;
   }

@@ -83,7 +83,9 @@ export function createPathView(container, path, onPick) {
   let preview = null;
   if (a.feedIndex.length / 2 + pointMove.length > PREVIEW_FROM) {
     const tolerance = PREVIEW_TOLERANCE_PX * worldPerPixel(distance, size, camera.fov, container.clientHeight || 400, camera.near);
+    const t0 = performance.now();
     const p = previewArrays(a, vertexEnd, tolerance);
+    const ms = Math.round(performance.now() - t0);
     const lines = new THREE.LineSegments(pathGeometry(p.pos, p.col), pathMaterial());
     lines.geometry.setIndex(new THREE.BufferAttribute(p.index, 1));
     const dots = new THREE.Points(pathGeometry(p.dotPos, p.dotCol), pathMaterial({ pointSize: 1, onTop: true }));
@@ -96,7 +98,7 @@ export function createPathView(container, path, onPick) {
     camera.layers.enable(1);
     feedLines.visible = false;
     points.visible = false;
-    preview = { objects: [lines, dots], tolerance, segments: p.segments, dots: p.dots };
+    preview = { objects: [lines, dots], tolerance, segments: p.segments, dots: p.dots, ms };
   }
   const controls = new OrbitControls(camera, renderer.domElement);
   controls.addEventListener("change", () => render());
@@ -276,6 +278,6 @@ export function createPathView(container, path, onPick) {
   let drawnCount = 0;
   for (let m = 0; m < moveCount; m++) drawnCount += drawn[m];
   resize();
-  const previewInfo = preview && { tolerancePx: PREVIEW_TOLERANCE_PX, toleranceMm: preview.tolerance, segments: preview.segments, dots: preview.dots };
+  const previewInfo = preview && { tolerancePx: PREVIEW_TOLERANCE_PX, toleranceMm: preview.tolerance, segments: preview.segments, dots: preview.dots, ms: preview.ms };
   return { preview: previewInfo, drawFullPath, fullPathShown: () => !preview || !!preview.replaced, select, placeTool, screenPoint, distanceToMove, pick, warmUp, finishFrame, dotMoves: pointMove, dotsRimmed: fewDots, drawnSegments: drawnCount, canvas: renderer.domElement, render: renderNow };
 }
