@@ -195,7 +195,7 @@ export function buildToolPathPage(root, header, blob) {
   root.appendChild(peakBox);
 
   lap("tables");
-  // The charts lie below the first screen: they are drawn once they come within a screen of
+  // The charts lie below the first screen: they are drawn once they come within 200 px of
   // it. Without a GPU their canvases are rasterised by SwiftShader in the GPU process, whose
   // queue the 3D view's first frame shares: drawn at load they held that frame back by 1-2 s
   // on every page, large or small.
@@ -217,7 +217,7 @@ export function buildToolPathPage(root, header, blob) {
       chartWatch.disconnect();
       drawCharts();
     },
-    { rootMargin: "100% 0px" },
+    { rootMargin: "200px 0px" },
   );
   chartWatch.observe(chartBox);
 
