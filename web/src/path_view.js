@@ -98,7 +98,7 @@ export function createPathView(container, path, onPick) {
     camera.layers.enable(1);
     feedLines.visible = false;
     points.visible = false;
-    preview = { objects: [lines, dots], tolerance, segments: p.segments, dots: p.dots, ms };
+    preview = { objects: [lines, dots], tolerance, segments: p.segments, dots: p.dots, ms, shown: true };
   }
   const controls = new OrbitControls(camera, renderer.domElement);
   controls.addEventListener("change", () => render());
@@ -171,16 +171,14 @@ export function createPathView(container, path, onPick) {
     gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array(4));
   }
 
-  //! Replaces the preview with the full path (drawn with the next frame).
-  function drawFullPath() {
+  //! Draws the preview (on) or the full path (off) with the next frame; the page shows the
+  //! preview only until it is ready (the browser test compares the two).
+  function showPreview(on) {
     if (!preview) return;
-    for (const object of preview.objects) {
-      scene.remove(object);
-      object.geometry.dispose();
-    }
-    feedLines.visible = true;
-    points.visible = true;
-    preview.replaced = true;
+    for (const object of preview.objects) object.visible = on;
+    feedLines.visible = !on;
+    points.visible = !on;
+    preview.shown = on;
     render();
   }
 
@@ -279,5 +277,5 @@ export function createPathView(container, path, onPick) {
   for (let m = 0; m < moveCount; m++) drawnCount += drawn[m];
   resize();
   const previewInfo = preview && { tolerancePx: PREVIEW_TOLERANCE_PX, toleranceMm: preview.tolerance, segments: preview.segments, dots: preview.dots, ms: preview.ms };
-  return { preview: previewInfo, drawFullPath, fullPathShown: () => !preview || !!preview.replaced, select, placeTool, screenPoint, distanceToMove, pick, warmUp, finishFrame, dotMoves: pointMove, dotsRimmed: fewDots, drawnSegments: drawnCount, canvas: renderer.domElement, render: renderNow };
+  return { preview: previewInfo, drawFullPath: () => showPreview(false), showPreview, fullPathShown: () => !preview || !preview.shown, select, placeTool, screenPoint, distanceToMove, pick, warmUp, finishFrame, dotMoves: pointMove, dotsRimmed: fewDots, drawnSegments: drawnCount, canvas: renderer.domElement, render: renderNow };
 }

@@ -252,6 +252,7 @@ export function buildToolPathPage(root, header, blob) {
     preview: path.preview,
     drawFullPath: () => path.drawFullPath(),
     fullPathShown: () => path.fullPathShown(),
+    showPreview: (on) => path.showPreview(on),
     dotMoves: () => Array.from(path.dotMoves),
     dotsRimmed: path.dotsRimmed,
     chartsDrawn: () => chartCount,
