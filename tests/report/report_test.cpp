@@ -264,5 +264,43 @@ TEST(ReportPage, IsOneFileWithItsScriptInline) {
     EXPECT_GT(html.size(), 100000U);  // three.js and uPlot are in it
 }
 
+TEST(ReportPage, DataComesInPiecesOfWholeBase64Quads) {
+    // Random values barely compress: the base64 of this page is several MiB, so several pieces.
+    std::mt19937 random(7);
+    std::uniform_real_distribution<double> value(0.0, 1.0);
+    ChartSeries series;
+    series.name = "noise";
+    for (int i = 0; i < 400000; ++i) {
+        series.x.push_back(i);
+        series.y.push_back(value(random));
+    }
+    ReportPage page;
+    page.title = "pieces";
+    page.kind = "piston";
+    page.charts.push_back({"noise", "i", "v", false, {series}, {}, false});
+    const std::string html = render_report_html(page);
+    const std::string open = "<script type=\"application/octet-stream\">";
+    const std::string close = "</script><script>self.nckitData&&nckitData()</script>";
+    std::string joined;
+    std::size_t pieces = 0;
+    for (std::size_t at = html.find(open); at != std::string::npos; at = html.find(open, at)) {
+        at += open.size();
+        const std::size_t end = html.find(close, at);
+        ASSERT_NE(end, std::string::npos);
+        const std::string piece = html.substr(at, end - at);
+        EXPECT_EQ(piece.size() % 4, 0U);
+        EXPECT_LE(piece.size(), std::size_t{1} << 20);
+        joined += piece;
+        ++pieces;
+    }
+    EXPECT_GE(pieces, 3U);
+    // Every piece but the last is full, and together they are the whole data in order: the
+    // first bytes are gzip's magic number 1f 8b (base64 "H4s").
+    EXPECT_GT(joined.size(), (pieces - 1) * (std::size_t{1} << 20));
+    EXPECT_EQ(joined.rfind("H4s", 0), 0U);
+    EXPECT_EQ(joined.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/="),
+              std::string::npos);
+}
+
 }  // namespace
 }  // namespace nckit

@@ -2,16 +2,17 @@
 // what the page shows (for the browser tests and for scripting it from the console).
 import "uplot/dist/uPlot.min.css";
 import "./style.css";
-import { loadPayload } from "./payload.js";
+import { readPayload, unpackHere } from "./payload.js";
+import { startPayload } from "./payload_worker.js";
 import { buildToolPathPage } from "./tool_path_page.js";
 import { xyChart } from "./charts.js";
 import { el, figureTable } from "./dom.js";
 import { startRenderer } from "./early_gl.js";
 
-async function start(t0) {
+async function start(t0, payload) {
   const parsedMs = performance.now() - t0;
   const root = document.getElementById("app");
-  const { header, blob, bytes, timings } = await loadPayload(document.getElementById("nckit-data").textContent);
+  const { header, blob, bytes, timings } = readPayload(await payload.finish(unpackHere));
   const payloadMs = performance.now() - t0;
   root.appendChild(el("h1", null, header.title));
   let state = {};
@@ -55,12 +56,19 @@ async function start(t0) {
     builtMs,
     buildMs: performance.now() - t0,
   });
+  // A large path's first frame was its preview: the full path is drawn with the next frame,
+  // while the page already answers input.
+  if (state.drawFullPath) state.drawFullPath();
   if (state.warmUp) await state.warmUp();
 }
 
-// The script comes before the data in the page: begin the WebGL work now, read the data once
-// the browser has parsed it.
+// The script comes before the data in the page: begin the WebGL work now, unpack the data as
+// the browser reads it.
 const t0 = performance.now();
+// The data's pieces go to the worker as the browser reads them (each piece is followed by a
+// call of this).
+const payload = startPayload();
+self.nckitData = () => payload.take();
 const vertices = Number(document.getElementById("app").dataset.vertices || -1);
 if (vertices >= 0) {
   try {
@@ -70,7 +78,7 @@ if (vertices >= 0) {
   }
 }
 const parsed = document.readyState === "loading" ? new Promise((r) => document.addEventListener("DOMContentLoaded", r, { once: true })) : Promise.resolve();
-parsed.then(() => start(t0)).catch((error) => {
+parsed.then(() => start(t0, payload)).catch((error) => {
   console.error(error);
   document.getElementById("app").appendChild(el("pre", "error", "nckit report: " + (error && error.stack ? error.stack : error)));
 });

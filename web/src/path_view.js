@@ -8,6 +8,7 @@ import { LineMaterial } from "three/addons/lines/LineMaterial.js";
 import { pathArrays } from "./path_arrays.js";
 import { pathGeometry, pathMaterial } from "./path_material.js";
 import { takeRenderer } from "./early_gl.js";
+import { PREVIEW_FROM, PREVIEW_TOLERANCE_PX, previewArrays, worldPerPixel } from "./path_preview.js";
 
 const MANY_DOTS = 10000;
 const RAPID_COLOR = [119, 119, 119];
@@ -76,6 +77,28 @@ export function createPathView(container, path, onPick) {
     // A lathe: X (radius) up the screen, Z across, as turning drawings show it.
     camera.up.set(1, 0, 0);
     camera.position.set(0, -distance, 0);
+  }
+  // A large path opens with its preview (path_preview.js) drawn in place of the full lines and
+  // dots; drawFullPath() swaps them once the page is ready.
+  let preview = null;
+  if (a.feedIndex.length / 2 + pointMove.length > PREVIEW_FROM) {
+    const tolerance = PREVIEW_TOLERANCE_PX * worldPerPixel(distance, size, camera.fov, container.clientHeight || 400, camera.near);
+    const t0 = performance.now();
+    const p = previewArrays(a, vertexEnd, tolerance);
+    const ms = Math.round(performance.now() - t0);
+    const lines = new THREE.LineSegments(pathGeometry(p.pos, p.col), pathMaterial());
+    lines.geometry.setIndex(new THREE.BufferAttribute(p.index, 1));
+    const dots = new THREE.Points(pathGeometry(p.dotPos, p.dotCol), pathMaterial({ pointSize: 1, onTop: true }));
+    dots.renderOrder = 1;
+    for (const object of [lines, dots]) {
+      object.geometry.boundingSphere = new THREE.Sphere(new THREE.Vector3(), size);
+      object.layers.set(1); // drawn, never picked (the raycaster tests layer 0)
+      scene.add(object);
+    }
+    camera.layers.enable(1);
+    feedLines.visible = false;
+    points.visible = false;
+    preview = { objects: [lines, dots], tolerance, segments: p.segments, dots: p.dots, ms, shown: true };
   }
   const controls = new OrbitControls(camera, renderer.domElement);
   controls.addEventListener("change", () => render());
@@ -146,6 +169,17 @@ export function createPathView(container, path, onPick) {
   function finishFrame() {
     const gl = renderer.getContext();
     gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array(4));
+  }
+
+  //! Draws the preview (on) or the full path (off) with the next frame; the page shows the
+  //! preview only until it is ready (the browser test compares the two).
+  function showPreview(on) {
+    if (!preview) return;
+    for (const object of preview.objects) object.visible = on;
+    feedLines.visible = !on;
+    points.visible = !on;
+    preview.shown = on;
+    render();
   }
 
   //! Compiles the selection's wide-line shader while the page waits for input, so the first
@@ -242,5 +276,6 @@ export function createPathView(container, path, onPick) {
   let drawnCount = 0;
   for (let m = 0; m < moveCount; m++) drawnCount += drawn[m];
   resize();
-  return { select, placeTool, screenPoint, distanceToMove, pick, warmUp, finishFrame, dotMoves: pointMove, dotsRimmed: fewDots, drawnSegments: drawnCount, canvas: renderer.domElement, render: renderNow };
+  const previewInfo = preview && { tolerancePx: PREVIEW_TOLERANCE_PX, toleranceMm: preview.tolerance, segments: preview.segments, dots: preview.dots, ms: preview.ms };
+  return { preview: previewInfo, drawFullPath: () => showPreview(false), showPreview, fullPathShown: () => !preview || !preview.shown, select, placeTool, screenPoint, distanceToMove, pick, warmUp, finishFrame, dotMoves: pointMove, dotsRimmed: fewDots, drawnSegments: drawnCount, canvas: renderer.domElement, render: renderNow };
 }

@@ -1,5 +1,5 @@
 // Unpacks the page's data: base64 → gzip (the browser's own DecompressionStream) → a JSON header
-// and typed arrays (layout in docs/report.md, written by src/report/payload.cpp).
+// and typed arrays (payload_worker.js does the first two steps on a worker thread) (layout in docs/report.md, written by src/report/payload.cpp).
 
 function decodeDelta(bytes, count, scale) {
   const out = new Float64Array(count);
@@ -51,7 +51,8 @@ async function gunzip(packed) {
   return out.buffer;
 }
 
-export async function loadPayload(base64Text) {
+//! base64 text → the inflated bytes, on the page's own thread (where no worker can run).
+export async function unpackHere(base64Text) {
   // Uint8Array.fromBase64 where the browser has it (Chromium 140 on), else atob; both far
   // faster than fetching a data: URL of the same text.
   const t0 = performance.now();
@@ -67,6 +68,11 @@ export async function loadPayload(base64Text) {
   const t1 = performance.now();
   const buffer = await gunzip(packed);
   const t2 = performance.now();
+  return { buffer, timings: { base64: Math.round(t1 - t0), gunzip: Math.round(t2 - t1) } };
+}
+
+//! The inflated bytes → the header and a blob(name) reader of the typed arrays.
+export function readPayload({ buffer, timings }) {
   const headerLength = new DataView(buffer).getUint32(0, true);
   const header = JSON.parse(new TextDecoder().decode(new Uint8Array(buffer, 4, headerLength)));
   const base = Math.ceil((4 + headerLength) / 8) * 8;
@@ -92,5 +98,5 @@ export async function loadPayload(base64Text) {
     if (!e || e.type !== "text") throw new Error("page data has no text " + name);
     return new Uint8Array(buffer, base + e.offset, e.length);
   };
-  return { header, blob, bytes: buffer.byteLength, timings: { base64: Math.round(t1 - t0), gunzip: Math.round(t2 - t1) } };
+  return { header, blob, bytes: buffer.byteLength, timings };
 }

@@ -195,11 +195,31 @@ export function buildToolPathPage(root, header, blob) {
   root.appendChild(peakBox);
 
   lap("tables");
+  // The charts lie below the first screen: they are drawn once they come within 200 px of
+  // it. Without a GPU their canvases are rasterised by SwiftShader in the GPU process, whose
+  // queue the 3D view's first frame shares: drawn at load they held that frame back by 1-2 s
+  // on every page, large or small.
   const chartBox = el("section", "charts");
   chartBox.appendChild(el("h2", null, "Planned motion against time"));
+  const chartSpace = el("div", "chart-space");
+  chartBox.appendChild(chartSpace);
   root.appendChild(chartBox);
-  speedChart(chartBox, samples);
-  axisCharts(chartBox, samples, axes, tp.machine.axes, (i) => setTime(i, false));
+  let chartCount = 0;
+  function drawCharts() {
+    if (chartCount) return;
+    chartSpace.remove();
+    speedChart(chartBox, samples);
+    chartCount = 1 + axisCharts(chartBox, samples, axes, tp.machine.axes, (i) => setTime(i, false)).length;
+  }
+  const chartWatch = new IntersectionObserver(
+    (entries) => {
+      if (!entries.some((e) => e.isIntersecting)) return;
+      chartWatch.disconnect();
+      drawCharts();
+    },
+    { rootMargin: "200px 0px" },
+  );
+  chartWatch.observe(chartBox);
 
   lap("charts");
   const state = {
@@ -229,8 +249,13 @@ export function buildToolPathPage(root, header, blob) {
     renderNow: () => path.render(),
     warmUp: () => path.warmUp(),
     finishFrame: () => path.finishFrame(),
+    preview: path.preview,
+    drawFullPath: () => path.drawFullPath(),
+    fullPathShown: () => path.fullPathShown(),
+    showPreview: (on) => path.showPreview(on),
     dotMoves: () => Array.from(path.dotMoves),
     dotsRimmed: path.dotsRimmed,
+    chartsDrawn: () => chartCount,
     select: (m) => select(m, true),
   };
   setTime(0, true);

@@ -1,5 +1,7 @@
 // Time until a report page is interactive in Debian's chromium: from the start of navigation
-// until the page has built everything and drawn its first frame (window.nckitReport.ready).
+// until the page has built everything and drawn its first frame (window.nckitReport.ready),
+// and until its full path is drawn (drawn_ms; later than ready on a page that opens with a
+// preview of its path).
 // Usage: node web/test/measure_load.mjs PAGE.html [RUNS]   → one JSON line
 import { launch, openPage } from "./browser.mjs";
 import { cpuBetween, treeCpu } from "./process_cpu.mjs";
@@ -21,10 +23,12 @@ try {
     browserCpu.push(Math.round(1000 * cpuBetween(before, treeCpu(browser.process().pid))));
     if (errors.length) throw new Error(errors.join(" | "));
     times.push(readyMs);
-    // Until the GPU has drawn everything asked of it so far (reading a pixel of the 3D view
-    // waits for that): the same moment on a page whose ready does not wait for the GPU.
+    // Until the GPU has drawn everything asked of it by the next animation frame (reading a
+    // pixel of the 3D view waits for that): the same moment on a page whose ready does not
+    // wait for the GPU, and on a page that opened with a preview, the full path drawn.
     const t1 = Date.now();
-    await page.evaluate(() => {
+    await page.evaluate(async () => {
+      await new Promise((resolve) => requestAnimationFrame(resolve));
       const canvas = window.nckitReport.canvas;
       const gl = canvas && (canvas.getContext("webgl2") || canvas.getContext("webgl"));
       if (gl) gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array(4));
@@ -44,6 +48,8 @@ try {
       builtMs: Math.round(window.nckitReport.builtMs),
       buildMs: Math.round(window.nckitReport.buildMs),
       timings: window.nckitReport.timings,
+      preview: window.nckitReport.preview || null,
+      fullPathShown: window.nckitReport.fullPathShown ? window.nckitReport.fullPathShown() : true,
     }));
     // A click on the path is answered (picking over every drawn segment).
     const t0 = Date.now();

@@ -160,6 +160,17 @@ async function testPage(browser, spec) {
     for (const [a, v] of Object.entries(tool.position)) worst = Math.max(worst, Math.abs(row[head.indexOf(a)] - v));
     check(tool.index === k && worst < 1e-9,
       `slider at step ${k}: the tool at t = ${tool.t.toFixed(6)} s is where nckit plan --trace has it (largest difference ${worst.toExponential(1)})`);
+
+    // The axis charts are drawn once they come near the screen: scrolled to, there are four
+    // (speed, velocity, acceleration, jerk) and the first is not blank.
+    const before = await page.evaluate(() => window.nckitReport.chartsDrawn());
+    await (await page.$(".charts")).scrollIntoView();
+    await page.waitForFunction(() => window.nckitReport.chartsDrawn() > 0, { timeout: 30000 });
+    await frames(page);
+    const drawnCharts = await page.evaluate(() => window.nckitReport.chartsDrawn());
+    const chartInk = nonBackgroundFraction(decode(await (await page.$(".charts canvas")).screenshot({ type: "png" })));
+    check(drawnCharts === 4 && chartInk > 0.005,
+      `axis charts: ${before} drawn before they were scrolled to, ${drawnCharts} after; the first not blank (${(100 * chartInk).toFixed(2)} % of its pixels drawn)`);
   } else {
     check(state.charts > 0, `${state.charts} process chart(s)`);
     const inked = nonBackgroundFraction(decode(await (await page.$(".process-charts canvas")).screenshot({ type: "png" })));
