@@ -218,7 +218,9 @@ TEST(Planner, FeedOverrideScalesFeeds) {
 TEST(Planner, StreamingEmitsFinalPiecesBeforeTheEnd) {
     MachineConfig m = plan_test::test_machine();
     MoveBuilder b;
-    for (int k = 1; k <= 5000; ++k) b.line(xyz(0.01 * k, 0), 3000);
+    // Under a jerk limit the collinear lines are merged 16 to one (chain_smoother.hpp): 20,000
+    // of them leave 1,250 segments, five runs of at most a quarter of the window.
+    for (int k = 1; k <= 20000; ++k) b.line(xyz(0.01 * k, 0), 3000);
     PlannerOptions o;
     o.window_moves = 1000;
     Planner planner(m, o);
@@ -228,13 +230,13 @@ TEST(Planner, StreamingEmitsFinalPiecesBeforeTheEnd) {
         planner.push(move);
         while (planner.pop(piece)) ++popped;
     }
-    EXPECT_GT(popped, 4000U);
+    const std::size_t before_finish = popped;
     planner.finish();
     while (planner.pop(piece)) ++popped;
-    EXPECT_EQ(popped, 5000U);
     // Same result as unlimited look-ahead here: the braking needs far fewer than 500 segments.
     const Planned whole = plan_and_check(b, m);
-    EXPECT_EQ(whole.pieces.size(), 5000U);
+    EXPECT_EQ(popped, whole.pieces.size());
+    EXPECT_GE(before_finish, whole.pieces.size() * 3 / 4);  // all but the last run
 }
 
 TEST(Planner, ReportsMovesWithoutFeed) {
