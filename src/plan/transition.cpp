@@ -171,10 +171,11 @@ bool build(const Transition& t, const PathPoint& a, const PathPoint& b, double t
     if (chained) {
         // On a chain the curve samples a smooth path: its parameter length is that path's arc
         // length, estimated by the circular arc with the end directions, chord·(φ/2)/sin(φ/2).
-        // Any other length makes |q'| vary along the quintic, and its third derivative (a jerk
-        // term, times the speed cubed) grows by about 60·(length error)/L³: on 0.06 mm chords of
-        // an r 20 circle the mean of chord and trims is 2.6e-8 mm short, which doubles the
-        // circle's own 1/r².
+        // Any other length makes |q'| vary along the quintic, which adds to its third derivative
+        // (a jerk term, times the speed cubed) in proportion to the length error over L³: on
+        // the 0.06 mm chords of an r 20 circle the mean of chord and trims is short by about the
+        // arc's excess over its chord, h³/(24·r²) = 2.6e-8 mm, and the third derivative along
+        // the path came to 0.0056 /mm² where the circle has 1/r² = 0.0025.
         const double c = std::clamp(a.d1[0] * b.d1[0] + a.d1[1] * b.d1[1] + a.d1[2] * b.d1[2], -1.0, 1.0);
         const double half_turn = 0.5 * std::acos(c);
         if (half_turn < chained_max_half_turn_rad) {
