@@ -9,13 +9,15 @@ namespace nckit::plan_detail {
 namespace {
 
 constexpr long half = chain_half_width;
+// Vertices no longer needed are dropped from the stores once there are this many.
+constexpr long compact_after = 1024;
 
 double norm3(const std::array<double, 3>& v) {
     return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
 }
 
-double distance_to_chord(const std::array<double, 3>& p, const std::array<double, 3>& a,
-                         const std::array<double, 3>& b) {
+double distance2_to_chord(const std::array<double, 3>& p, const std::array<double, 3>& a,
+                          const std::array<double, 3>& b) {
     double dd = 0;
     double t = 0;
     for (std::size_t i = 0; i < 3; ++i) {
@@ -28,7 +30,7 @@ double distance_to_chord(const std::array<double, 3>& p, const std::array<double
         const double e = p[i] - a[i] - t * (b[i] - a[i]);
         d2 += e * e;
     }
-    return std::sqrt(d2);
+    return d2;
 }
 
 }  // namespace
@@ -43,6 +45,25 @@ ChainSmoother::ChainSmoother() {
     double sum = 0;
     for (const double w : row) sum += w;
     for (std::size_t k = 0; k < row.size(); ++k) weights_[k] = row[k] / sum;
+}
+
+ChainSmoother::Vec3 ChainSmoother::convolve(const Vec3* first) const {
+    Vec3 s{};
+    for (std::size_t k = 0; k < weights_.size(); ++k) {
+        for (std::size_t i = 0; i < 3; ++i) s[i] += weights_[k] * first[k][i];
+    }
+    return s;
+}
+
+template <class At>
+ChainSmoother::Vec3 ChainSmoother::convolve_at(At at) const {
+    Vec3 s{};
+    for (long k = -half; k <= half; ++k) {
+        const Vec3 p = at(k);
+        const double w = weights_[static_cast<std::size_t>(k + half)];
+        for (std::size_t i = 0; i < 3; ++i) s[i] += w * p[i];
+    }
+    return s;
 }
 
 // The chain is extended beyond its fixed ends by odd reflection, P(−j) = 2·P(0) − P(j) and
@@ -139,13 +160,13 @@ bool ChainSmoother::pop(Move& out) {
 // highest frequencies of the chain, is removed as by K.
 void ChainSmoother::advance() {
     while (next_residual_ <= n_ && (ended_ || next_residual_ + half <= n_)) {
-        Vec3 s{};
-        for (long k = -half; k <= half; ++k) {
-            const Vec3 p = original(next_residual_ + k);
-            const double w = weights_[static_cast<std::size_t>(k + half)];
-            for (std::size_t i = 0; i < 3; ++i) s[i] += w * p[i];
-        }
-        const Vec3 p = original(next_residual_);
+        const long j = next_residual_;
+        // Inside the chain the taps read the stored vertices directly; near its ends through
+        // the reflections.
+        const Vec3 s = j - half >= points_base_ && j + half <= n_
+                           ? convolve(&points_[static_cast<std::size_t>(j - half - points_base_)])
+                           : convolve_at([&](long k) { return original(j + k); });
+        const Vec3 p = original(j);
         residuals_.push_back({p[0] - s[0], p[1] - s[1], p[2] - s[2]});
         ++next_residual_;
     }
@@ -159,12 +180,10 @@ void ChainSmoother::advance() {
         const bool fixed = v <= 1 || (ended_ && v >= n_ - 1);
         if (!fixed) {
             const Vec3 r = residual(v);
-            Vec3 moved{-r[0], -r[1], -r[2]};
-            for (long k = -half; k <= half; ++k) {
-                const Vec3 rk = residual(v + k);
-                const double w = weights_[static_cast<std::size_t>(k + half)];
-                for (std::size_t i = 0; i < 3; ++i) moved[i] += w * rk[i];
-            }
+            const Vec3 kr = v - half >= residuals_base_ && v + half < next_residual_
+                                ? convolve(&residuals_[static_cast<std::size_t>(v - half - residuals_base_)])
+                                : convolve_at([&](long k) { return residual(v + k); });
+            const Vec3 moved{kr[0] - r[0], kr[1] - r[1], kr[2] - r[2]};
             const double shift = norm3(moved);
             const double scale = shift > budget ? budget / shift : 1.0;
             for (std::size_t i = 0; i < 3; ++i) t[i] = p[i] + scale * moved[i];
@@ -178,13 +197,16 @@ void ChainSmoother::advance() {
     }
     // Keep what the next residual (P from next_residual_ − n) and vertex (R from next_vertex_ − n)
     // still need; reflections reach back only while those are near vertex 0.
-    while (points_base_ < std::min(next_residual_ - half, next_vertex_) - 1 && points_.size() > 1) {
-        points_.pop_front();
-        ++points_base_;
+    // Dropped in blocks, so the stores stay contiguous and each vertex is moved about once.
+    const long points_unused = std::min(next_residual_ - half, next_vertex_) - 1 - points_base_;
+    if (points_unused > compact_after && points_unused < static_cast<long>(points_.size())) {
+        points_.erase(points_.begin(), points_.begin() + points_unused);
+        points_base_ += points_unused;
     }
-    while (residuals_base_ < next_vertex_ - half - 1 && !residuals_.empty()) {
-        residuals_.pop_front();
-        ++residuals_base_;
+    const long residuals_unused = next_vertex_ - half - 1 - residuals_base_;
+    if (residuals_unused > compact_after && residuals_unused < static_cast<long>(residuals_.size())) {
+        residuals_.erase(residuals_.begin(), residuals_.begin() + residuals_unused);
+        residuals_base_ += residuals_unused;
     }
     if (ended_ && next_vertex_ > n_) n_ = -1;
 }
@@ -214,7 +236,7 @@ void ChainSmoother::emit(long v, const Vec3& at) {
         if (extends) {
             passed_.push_back(last_smoothed_);
             const double limit = chain_merge_share * tolerance_mm_;
-            for (const Vec3& p : passed_) extends = extends && distance_to_chord(p, anchor_, at) <= limit;
+            for (const Vec3& p : passed_) extends = extends && distance2_to_chord(p, anchor_, at) <= limit * limit;
             if (!extends) passed_.pop_back();
         }
         if (extends) {

@@ -57,6 +57,11 @@ private:
 
     [[nodiscard]] Vec3 original(long j) const;
     [[nodiscard]] Vec3 residual(long j) const;
+    //! K at the vertex whose 2n + 1 neighbours start at `first` (stored contiguously), or read by `at(k)`, k in [−n,
+    //! n].
+    [[nodiscard]] Vec3 convolve(const Vec3* first) const;
+    template <class At>
+    [[nodiscard]] Vec3 convolve_at(At at) const;
     void start(const Line& line, double tolerance_mm);
     void advance();
     void emit(long vertex, const Vec3& at);
@@ -65,10 +70,10 @@ private:
 
     std::array<double, 2 * chain_half_width + 1> weights_{};  //!< the kernel K
     // The current chain: vertices 0..n_ (the lines' end points), the first at chain index 0.
-    std::deque<Move> held_;    //!< lines not yet handed out; held_.front() ends at vertex emitted_ + 1
-    std::deque<Vec3> points_;  //!< written vertices from points_base_
+    std::deque<Move> held_;     //!< lines not yet handed out; held_.front() ends at vertex emitted_ + 1
+    std::vector<Vec3> points_;  //!< written vertices from points_base_
     long points_base_ = 0;
-    std::deque<Vec3> residuals_;  //!< P − K·P from residuals_base_ (filled up to next_residual_)
+    std::vector<Vec3> residuals_;  //!< P − K·P from residuals_base_ (filled up to next_residual_)
     long residuals_base_ = 0;
     long n_ = -1;  //!< index of the last vertex; -1: no chain
     bool ended_ = false;
