@@ -250,3 +250,35 @@ TEST(Planner, ReportsMovesWithoutFeed) {
 
 }  // namespace
 }  // namespace nckit
+
+namespace nckit {
+namespace {
+
+// Trims of two corners that nearly meet leave no sub-micrometre piece of line to be planned on
+// its own: the corner takes it, or leaves a whole micrometre (both kinds).
+TEST(Planner, NoSubMicrometreLeftoverBetweenCorners) {
+    for (const ProfileKind kind : {ProfileKind::trapezoid, ProfileKind::scurve}) {
+        const MachineConfig m = plan_test::test_machine(kind);
+        MoveBuilder b;
+        const double tolerance = 0.01;
+        // A 90° parabola corner trims 4·P/√2 from each line: lines of twice that plus 0.5 µm.
+        const double side = 2 * 4 * tolerance / std::sqrt(2.0) + 0.0005;
+        for (int k = 1; k <= 20; ++k) {
+            const AxisVector to =
+                k % 2 ? xyz(b.position[0] + side, b.position[1]) : xyz(b.position[0], b.position[1] + side);
+            b.line(to, 3000, PathControl{false, tolerance});
+        }
+        const Planned planned = plan_and_check(b, m);
+        std::size_t lines = 0;
+        for (const TrajectoryPiece& p : planned.pieces) {
+            if (p.kind != PieceKind::motion || p.blend) continue;
+            ++lines;
+            EXPECT_GE(p.segment.length, 1e-3 * (1 - 1e-9)) << static_cast<int>(kind);
+        }
+        // The trapezoid's corners leave a micrometre of each line; transitions may eat them whole.
+        if (kind == ProfileKind::trapezoid) EXPECT_GT(lines, 0U);
+    }
+}
+
+}  // namespace
+}  // namespace nckit
