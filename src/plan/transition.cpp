@@ -168,8 +168,8 @@ bool build(const Transition& t, const PathPoint& a, const PathPoint& b, double t
            double& deviation_mm, bool chained = false) {
     const double chord = distance3(a.position, b.position);
     double length = 0.5 * (chord + t.trim_before + t.trim_after);
-    if (chained) {
-        // On a chain the curve samples a smooth path: its parameter length is that path's arc
+    if (chained && t.replaced_before.shape == SegmentShape::line && t.replaced_after.shape == SegmentShape::line) {
+        // On a chain of lines the curve samples a smooth path: its parameter length is that path's arc
         // length, estimated by the circular arc with the end directions, chord·(φ/2)/sin(φ/2).
         // Any other length makes |q'| vary along the quintic, which adds to its third derivative
         // (a jerk term, times the speed cubed) in proportion to the length error over L³: on
