@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "transition.hpp"
+
 namespace nckit::plan_detail {
 
 bool tangent(const PathSegment& before, const PathSegment& after) {
@@ -84,8 +86,19 @@ std::optional<Blend> parabolic_corner(const PathSegment& before, double before_f
         jump_norm += jump[i] * jump[i];
     }
     jump_norm = std::sqrt(jump_norm);
-    const double trim =
-        std::min({4.0 * tolerance_mm / jump_norm, 0.5 * before_full_mm, 0.5 * after.length, before.length});
+    double trim = std::min({4.0 * tolerance_mm / jump_norm, 0.5 * before_full_mm, 0.5 * after.length, before.length});
+    // A sliver of `before` left between this corner and the one before would be planned as a
+    // segment of its own: the corner takes it when that keeps the tolerance and half of `after`,
+    // else it leaves a whole min_leftover_mm.
+    const double leftover = before.length - trim;
+    if (leftover > 0 && leftover < min_leftover_mm) {
+        const bool fits = before.length <= 0.5 * after.length && before.length * jump_norm / 4.0 <= tolerance_mm;
+        if (fits) {
+            trim = before.length;
+        } else if (before.length > 2 * min_leftover_mm) {
+            trim = before.length - min_leftover_mm;
+        }
+    }
     if (!(trim > 0)) return std::nullopt;
     Blend blend;
     blend.trim_mm = trim;

@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "arc_pieces.hpp"
+#include "chain_smoother.hpp"
 #include "junction.hpp"
 #include "lookahead.hpp"
 #include "transition.hpp"
@@ -66,6 +67,7 @@ struct Planner::Impl {
     bool last_motion_sync = false;                  //!< the last motion was G32/G33: a thread goes on at speed
     bool at_rest = true;                            //!< the last segment added to the window ends with a stop
     std::vector<plan_detail::ArcPiece> arc_pieces;  //!< reused by release_pending
+    plan_detail::ChainSmoother chains;              //!< S-curve: CAM polylines smoothed within G64 P
 
     Impl(MachineConfig m, PlannerOptions o)
         : machine(std::move(m)),
@@ -387,7 +389,37 @@ struct Planner::Impl {
         last_motion_sync = true;
     }
 
+    //! Under a jerk limit, G1 lines go through the chain smoother first (chain_smoother.hpp).
     void push(const Move& move) {
+        if (!diagnostics.empty()) return;
+        if (kind != ProfileKind::scurve) {
+            plan(move);
+            return;
+        }
+        double tolerance = 0;
+        if (const auto* line = std::get_if<Line>(&move.what)) {
+            tolerance = line->path.tolerance_mm > 0 ? line->path.tolerance_mm : options.default_blend_tolerance_mm;
+        }
+        const bool held = chains.push(move, tolerance);
+        if (!held) chains.flush();
+        drain_chains();
+        if (!held) plan(move);
+    }
+
+    void drain_chains() {
+        Move smoothed;
+        while (chains.pop(smoothed)) plan(smoothed);
+    }
+
+    void finish() {
+        chains.flush();
+        drain_chains();
+        release_pending(true);
+        locate(position);  // events of a program without motion: at the origin
+        lookahead.finish();
+    }
+
+    void plan(const Move& move) {
         if (!diagnostics.empty()) return;
         const double override_factor = options.feed_override;
         const bool after_sync = std::exchange(last_motion_sync, false);
@@ -442,9 +474,7 @@ void Planner::push(const Move& move) {
 }
 
 void Planner::finish() {
-    impl_->release_pending(true);
-    impl_->locate(impl_->position);  // events of a program without motion: at the origin
-    impl_->lookahead.finish();
+    impl_->finish();
 }
 
 bool Planner::pop(TrajectoryPiece& piece) {

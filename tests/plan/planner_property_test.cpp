@@ -7,6 +7,7 @@
 #include <numbers>
 #include <random>
 
+#include "../../src/plan/chain_smoother.hpp"
 #include "move_builder.hpp"
 #include "nckit/plan/planner.hpp"
 #include "trajectory_check.hpp"
@@ -130,7 +131,23 @@ TEST(PlannerProperty, RandomProgramsKeepEveryLimit) {
                    !std::holds_alternative<Arc>(b.moves[after].what)) {
                 ++after;
             }
-            ASSERT_LE(plan_test::deviation_from(p, move, b.moves[after]), tol * (1 + 1e-9) + 1e-9)
+            // Under a jerk limit a chain of short lines may be merged into one line before its
+            // transitions are built (chain_smoother.hpp): a transition then runs from the middle
+            // of one merged line to the middle of the next, over the moves they were merged from.
+            std::vector<const Move*> path{&move};
+            const std::size_t last =
+                std::min(b.moves.size() - 1, after + 2 * static_cast<std::size_t>(plan_detail::chain_max_merged));
+            const bool chain = kind == ProfileKind::scurve && std::holds_alternative<Line>(move.what);
+            for (std::size_t k = seq + 1; k <= (chain ? last : after); ++k) {
+                // Only lines are merged, and a chain's last line is as written: an arc beyond the
+                // next motion is never reached (and each costs 4,096 chords).
+                if (std::holds_alternative<Line>(b.moves[k].what)) path.push_back(&b.moves[k]);
+                if (std::holds_alternative<Arc>(b.moves[k].what)) {
+                    if (k <= after) path.push_back(&b.moves[k]);
+                    break;
+                }
+            }
+            ASSERT_LE(plan_test::deviation_from(p, path), tol * (1 + 1e-9) + 1e-9)
                 << "program " << program << " kind " << static_cast<int>(kind) << " shape "
                 << static_cast<int>(p.segment.shape) << " len " << p.segment.length << " seq " << seq << " of "
                 << b.moves.size() << " next is line " << std::holds_alternative<Line>(b.moves[seq + 1].what);
@@ -155,11 +172,17 @@ TEST(PlannerProperty, ShortSegmentChainsReachTheFeed) {
         }
         const PlanResult res = plan_moves(b.moves, m);
         double top = 0;
-        for (const TrajectoryPiece& p : res.trajectory.pieces)
-            top = std::max(top, sample(p, p.start_time_s).path_velocity);
+        // Sampled inside the pieces too: merged chain lines (chain_smoother.hpp) make fewer, longer ones.
+        for (const TrajectoryPiece& p : res.trajectory.pieces) {
+            for (int k = 0; k < 4; ++k) {
+                top = std::max(top, sample(p, p.start_time_s + p.duration_s * k / 4).path_velocity);
+            }
+        }
         // Transitions run at the feed up to their parametric speed's bound (|dp/ds| sampled and
-        // padded): within 1e-4 of it.
-        EXPECT_NEAR(top, 20, 20 * 1e-4) << step;
+        // padded), and a run takes the limits of its first segment when the others lie within
+        // run_spread above (the chain's first transition, from the written line into the curve,
+        // allows 98 % of the feed at step 0.01): within 1e-3 of the feed.
+        EXPECT_NEAR(top, 20, 20 * 1e-3) << step;
     }
 }
 

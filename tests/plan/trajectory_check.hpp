@@ -38,10 +38,11 @@ inline PathSegment programmed_segment(const Move& move) {
 }
 
 //! mm: the largest distance, over 65 points of a blend or transition piece, from the programmed
-//! path of the two moves it joins (each taken as 4,096 chords; lines exactly).
-inline double deviation_from(const TrajectoryPiece& piece, const Move& before, const Move& after) {
+//! path of `moves` (each taken as 4,096 chords; lines exactly).
+inline double deviation_from(const TrajectoryPiece& piece, const std::vector<const Move*>& moves) {
     double worst = 0;
-    const PathSegment paths[2] = {programmed_segment(before), programmed_segment(after)};
+    std::vector<PathSegment> paths;
+    for (const Move* m : moves) paths.push_back(programmed_segment(*m));
     for (int k = 0; k <= 64; ++k) {
         const AxisVector p = position_at(piece.segment, piece.segment.length * k / 64);
         double best = std::numeric_limits<double>::infinity();
@@ -67,6 +68,11 @@ inline double deviation_from(const TrajectoryPiece& piece, const Move& before, c
         worst = std::max(worst, best);
     }
     return worst;
+}
+
+//! The same from the programmed path of the two moves it joins.
+inline double deviation_from(const TrajectoryPiece& piece, const Move& before, const Move& after) {
+    return deviation_from(piece, std::vector<const Move*>{&before, &after});
 }
 
 struct CheckStats {
