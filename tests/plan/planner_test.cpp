@@ -276,7 +276,9 @@ TEST(Planner, NoSubMicrometreLeftoverBetweenCorners) {
             EXPECT_GE(p.segment.length, 1e-3 * (1 - 1e-9)) << static_cast<int>(kind);
         }
         // The trapezoid's corners leave a micrometre of each line; transitions may eat them whole.
-        if (kind == ProfileKind::trapezoid) EXPECT_GT(lines, 0U);
+        if (kind == ProfileKind::trapezoid) {
+            EXPECT_GT(lines, 0U);
+        }
     }
 }
 
