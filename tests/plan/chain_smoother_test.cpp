@@ -85,7 +85,9 @@ TEST(ChainSmoother, StaysWithinItsShareOfTheToleranceAndKeepsTheEnds) {
         const double share = (plan_detail::chain_budget_share + plan_detail::chain_merge_share) * tolerance;
         for (std::size_t k = 0; k < out.size(); ++k) {
             const Line& l = std::get<Line>(out[k].what);
-            if (k > 0) EXPECT_EQ(std::get<Line>(out[k - 1].what).to, l.from);
+            if (k > 0) {
+                EXPECT_EQ(std::get<Line>(out[k - 1].what).to, l.from);
+            }
             for (int step = 0; step <= 16; ++step) {
                 AxisVector p;
                 for (std::size_t i = 0; i < 3; ++i) p[i] = l.from[i] + (l.to[i] - l.from[i]) * step / 16.0;
