@@ -140,6 +140,10 @@ std::optional<InterpResult> NgcRunner::run_line(std::vector<Move>& pending) {
         return std::nullopt;
     }
     if (!skipping_o_.empty()) return std::nullopt;
+    if (profile_) {
+        if (auto error = collect_profile_line()) return InterpResult(std::move(*error));
+        return std::nullopt;
+    }
     auto result = run_ordinary(pending);
     if (result && std::holds_alternative<Diagnostic>(*result)) error_is_recoverable_ = frames_.size() == 1;
     return result;
@@ -181,6 +185,7 @@ std::optional<InterpResult> NgcRunner::run_ordinary(std::vector<Move>& pending) 
             probing = true;
         }
     }
+    if (g7x_word() != nullptr) return run_g7x(pending);
     if (auto error = read_inverse_time()) return InterpResult(std::move(*error));
     if (auto error = translate_block()) return InterpResult(std::move(*error));
     bool program_end = false;

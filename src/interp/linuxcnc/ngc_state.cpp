@@ -37,6 +37,9 @@ double NgcRunner::to_program_units(double mm) const {
 }
 
 std::optional<double> NgcRunner::axis_position(char letter) const {
+    // While a lathe cycle reads its shape, LinuxCNC's position follows the shape.
+    if (profile_ && letter == 'X') return profile_->at.imag();
+    if (profile_ && letter == 'Z') return profile_->at.real();
     for (std::size_t i = 0; i < machine_.axes.size(); ++i) {
         if (axis_from_letter(letter) == machine_.axes[i].axis) {
             auto v = executor_.read_system(5001 + static_cast<std::int64_t>(i));
