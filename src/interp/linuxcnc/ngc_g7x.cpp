@@ -132,14 +132,15 @@ std::optional<InterpResult> NgcRunner::run_g7x(std::vector<Move>& pending) {
     const auto q = word_value(block_, 'Q');
     if (!q) return InterpResult(fail(cycle_word.column, fmt::format("G{} requires a Q word", cycle_word.value)));
     if (view.cutter_compensation) {
-        return InterpResult(fail(cycle_word.column,
-                                 cycle == 70 ? "G70 with cutter compensation in force is not supported by nckit"
-                                             : fmt::format("G{} cannot be used with cutter compensation enabled",
-                                                           cycle_word.value)));
+        return InterpResult(
+            fail(cycle_word.column,
+                 cycle == 70 ? "G70 with cutter compensation in force is not supported by nckit"
+                             : fmt::format("G{} cannot be used with cutter compensation enabled", cycle_word.value)));
     }
     const bool zx_plane = has_g(block_, 18) || (view.plane == Plane::zx && !has_g(block_, 17) && !has_g(block_, 19));
     if (!zx_plane) {
-        return InterpResult(fail(cycle_word.column, fmt::format("G{} can only be used in XZ plane (G18)", cycle_word.value)));
+        return InterpResult(
+            fail(cycle_word.column, fmt::format("G{} can only be used in XZ plane (G18)", cycle_word.value)));
     }
     if (view.diameter_mode || has_g(block_, 7)) {
         return InterpResult(fail(cycle_word.column, "LinuxCNC's lathe cycles in diameter mode (G7) are not supported"));
@@ -152,7 +153,8 @@ std::optional<InterpResult> NgcRunner::run_g7x(std::vector<Move>& pending) {
     G7xRequest request;
     request.cycle = cycle;
     request.variant = code % 10;
-    request.start = ZX(bz ? (incremental ? *here_z + *bz : *bz) : *here_z, bx ? (incremental ? *here_x + *bx : *bx) : *here_x);
+    request.start =
+        ZX(bz ? (incremental ? *here_z + *bz : *bz) : *here_z, bx ? (incremental ? *here_x + *bx : *bx) : *here_x);
     request.d = word_value(block_, 'D').value_or(0.0);
     request.e = word_value(block_, 'E').value_or(0.0);
     request.i = word_value(block_, 'I').value_or(1.0);

@@ -42,15 +42,15 @@ struct ProfileMove {
 
 //! What a G70/G71/G72 block asks for (LinuxCNC's words and defaults).
 struct G7xRequest {
-    int cycle = 71;    //!< 70, 71 or 72
-    int variant = 0;   //!< 0 (G71), 1 (G71.1: no pockets), 2 (G71.2: pockets only)
-    ZX start;          //!< Z and X of the block: where the passes start from
-    double d = 0;      //!< finishing allowance (G70: of the first pass)
-    double e = 0;      //!< G70: allowance of the last pass
-    double i = 1;      //!< depth of cut
-    double r = 0.5;    //!< retract distance
-    double u = 0;      //!< shift of the roughed shape in X
-    double w = 0;      //!< shift in Z
+    int cycle = 71;     //!< 70, 71 or 72
+    int variant = 0;    //!< 0 (G71), 1 (G71.1: no pockets), 2 (G71.2: pockets only)
+    ZX start;           //!< Z and X of the block: where the passes start from
+    double d = 0;       //!< finishing allowance (G70: of the first pass)
+    double e = 0;       //!< G70: allowance of the last pass
+    double i = 1;       //!< depth of cut
+    double r = 0.5;     //!< retract distance
+    double u = 0;       //!< shift of the roughed shape in X
+    double w = 0;       //!< shift in Z
     double passes = 1;  //!< G70 P: its whole part passes; the allowance steps by (D - E) / P
 };
 

@@ -17,18 +17,28 @@ constexpr ZX unit_x(0, 1);
 //! Back from the working frame: the inverse of the turn and mirrors, in LinuxCNC's numbering.
 ZX unflip(int flips, ZX p) {
     switch (flips) {
-        case 1: return -std::conj(p);
-        case 2: return std::conj(p);
-        case 3: return -p;
-        case 4: return unit_x * p;
-        case 5: return std::conj(unit_x * p);
-        case 6: return -std::conj(unit_x * p);
-        case 7: return -unit_x * p;
-        default: return p;
+        case 1:
+            return -std::conj(p);
+        case 2:
+            return std::conj(p);
+        case 3:
+            return -p;
+        case 4:
+            return unit_x * p;
+        case 5:
+            return std::conj(unit_x * p);
+        case 6:
+            return -std::conj(unit_x * p);
+        case 7:
+            return -unit_x * p;
+        default:
+            return p;
     }
 }
 
-bool mirrors(int flips) { return flips == 1 || flips == 2 || flips == 5 || flips == 6; }
+bool mirrors(int flips) {
+    return flips == 1 || flips == 2 || flips == 5 || flips == 6;
+}
 
 bool on_arc(const ProfileSegment& s, ZX p) {
     const double from_start = std::imag(std::conj(s.start - s.center) * (p - s.center));
