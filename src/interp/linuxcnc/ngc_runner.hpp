@@ -120,6 +120,8 @@ private:
     // ngc_state.cpp: parameters LinuxCNC keeps current, and its parameter file.
     void connect_live_parameters();
     [[nodiscard]] std::optional<double> live_numbered(std::int64_t n) const;
+    //! G92.2 (offsets off, #5211-#5219 kept) and G92.3 (offsets back from them) as G92.1 / G92.
+    std::optional<Diagnostic> translate_g92_kept();
     [[nodiscard]] std::optional<double> live_named(const std::string& name) const;
     std::optional<Diagnostic> load_parameter_file();
     std::optional<Diagnostic> apply_parameters(const std::map<std::int64_t, double>& values,
@@ -181,6 +183,8 @@ private:
     std::optional<std::array<double, 9>> probe_result_;
     //! While a lathe cycle reads its shape: the shape so far.
     std::optional<ProfileReading> profile_;
+    //! After G92.2: the G92 offsets #5211-#5219 kept for G92.3, program units (X Y Z A B C U V W).
+    std::optional<std::array<double, 9>> g92_kept_;
 };
 
 }  // namespace nckit::interp::ngc
