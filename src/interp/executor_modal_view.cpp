@@ -12,6 +12,7 @@ ModalView Executor::modal_view() const {
     view.g52_offset = offsets_.g52;
     view.plane = modal_.plane;
     view.incremental = modal_.incremental;
+    view.arc_centers_absolute = modal_.arc_centers_absolute;
     view.feed_mode = modal_.feed_mode;
     view.diameter_mode = modal_.diameter_mode;
     view.motion_code = modal_.motion;

@@ -134,8 +134,11 @@ TEST(NgcProbe, G38FeedsToThePointSetsParametersAndGoesOnShortOfIt) {
               (std::vector<std::string>{
                   "0.0000 0.0000 0.0000 -> 0.0000 0.0000 0.0000", "0.0000 0.0000 0.0000 -> 3.0000 4.0000 0.0000",
                   "3.0000 4.0000 0.0000 -> 2.8476 3.7968 1.0000", "2.8476 3.7968 1.0000 -> 3.0000 4.0000 1.0000"}));
-    EXPECT_EQ(at(error_of("G0 Z0\nG38.2 Z-0.1 F100\nM2\n", linuxcnc_mill())),
-              "2:1 start point too close to probe point (G38.x needs 0.254 mm at least)");
+    // rs274 runs a probe of any length (0.1 mm here) and G38.3 to where the tool stands; G38.2
+    // (and G38.4) there is its error.
+    EXPECT_EQ(lines_of("G0 Z0\nG38.2 Z-0.1 F100\nG38.3 Z-0.1\nM2\n").size(), 3u);
+    EXPECT_EQ(at(error_of("G0 Z0\nG38.2 Z0 F100\nM2\n", linuxcnc_mill())),
+              "2:1 start point too close to probe point (G38.2/G38.4 to where the tool is)");
 }
 
 }  // namespace

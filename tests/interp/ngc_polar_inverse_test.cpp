@@ -89,5 +89,18 @@ TEST(NgcInverseTime, EveryFeedBlockNeedsItsF) {
     EXPECT_EQ(d.message, "F word missing with inverse time g1 move");
 }
 
+TEST(NgcG92Kept, G92Point2ClearsTheOffsetAndG92Point3BringsItBack) {
+    // G92 X1 Y2 from X5 Y5 shifts by (4, 3); G92.2 clears the shift but keeps #5211/#5212 (4, 3),
+    // G92.3 brings the shift back: X1 Y2 is then the machine's X5 Y5 again.
+    const auto lines = feeds_of(
+        "G21 G17 G90\nG0 X5 Y5\nG92 X1 Y2\nG92.2\n"
+        "G1 X[#5211] Y[#5212] F100\nG92.3\nG1 X1 Y2\nM2\n");
+    ASSERT_EQ(lines.size(), 3u);
+    EXPECT_NEAR(lines[1].to[Axis::X], 4.0, 1e-9);
+    EXPECT_NEAR(lines[1].to[Axis::Y], 3.0, 1e-9);
+    EXPECT_NEAR(lines[2].to[Axis::X], 5.0, 1e-9);
+    EXPECT_NEAR(lines[2].to[Axis::Y], 5.0, 1e-9);
+}
+
 }  // namespace
 }  // namespace nckit::test

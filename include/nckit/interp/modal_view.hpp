@@ -20,7 +20,8 @@ struct ModalView {
     AxisVector g92_offset;                     //!< G92 / G50 coordinate shift, mm / deg
     AxisVector g52_offset;                     //!< G52 local shift, mm / deg
     Plane plane = Plane::xy;
-    bool incremental = false;  //!< G91
+    bool incremental = false;           //!< G91
+    bool arc_centers_absolute = false;  //!< G90.1: I J K name the centre, not its offset
     FeedMode feed_mode = FeedMode::per_minute;
     bool diameter_mode = false;           //!< G7: X words are diameters
     int motion_code = 0;                  //!< active motion G code x 10 (G1 = 10, G33 = 330, G80 = 800)

@@ -140,6 +140,10 @@ std::optional<InterpResult> NgcRunner::run_line(std::vector<Move>& pending) {
         return std::nullopt;
     }
     if (!skipping_o_.empty()) return std::nullopt;
+    if (profile_) {
+        if (auto error = collect_profile_line()) return InterpResult(std::move(*error));
+        return std::nullopt;
+    }
     auto result = run_ordinary(pending);
     if (result && std::holds_alternative<Diagnostic>(*result)) error_is_recoverable_ = frames_.size() == 1;
     return result;
@@ -175,13 +179,17 @@ std::optional<InterpResult> NgcRunner::run_ordinary(std::vector<Move>& pending) 
     // G38.2-G38.5 probe as LinuxCNC's rs274 simulates it: a straight feed to the programmed
     // point (nothing trips on the way) that leaves that point in #5061-#5069 and 0 in #5070.
     bool probing = false;
+    bool probe_must_move = false;  // G38.2 and G38.4 (not G38.3, G38.5) refuse a probe to where they stand
     for (Word& w : block_.words) {
         if (w.letter == 'G' && w.value >= 38.15 && w.value <= 38.55) {
+            probe_must_move = std::abs(w.value - 38.2) < 1e-6 || std::abs(w.value - 38.4) < 1e-6;
             w.value = 1;
             probing = true;
         }
     }
+    if (g7x_word() != nullptr) return run_g7x(pending);
     if (auto error = read_inverse_time()) return InterpResult(std::move(*error));
+    if (auto error = translate_g92_kept()) return InterpResult(std::move(*error));
     if (auto error = translate_block()) return InterpResult(std::move(*error));
     bool program_end = false;
     const std::size_t first_new = pending.size();
@@ -199,14 +207,12 @@ std::optional<InterpResult> NgcRunner::run_ordinary(std::vector<Move>& pending) 
     apply_inverse_time(pending, first_new);
     follow_linuxcnc_tapping(pending, first_new);
     if (probing) {
-        // LinuxCNC refuses a probe shorter than 0.01 in (0.254 mm) in X Y Z.
+        // LinuxCNC 2.9 refuses G38.2/G38.4 to the very point where the tool stands (every axis
+        // equal); G38.3/G38.5 there, and any probe of some length, run.
         for (std::size_t i = first_new; i < pending.size(); ++i) {
             const auto* line = std::get_if<Line>(&pending[i].what);
-            if (line == nullptr) continue;
-            const double dx = line->to[Axis::X] - line->from[Axis::X], dy = line->to[Axis::Y] - line->from[Axis::Y],
-                         dz = line->to[Axis::Z] - line->from[Axis::Z];
-            if (std::sqrt(dx * dx + dy * dy + dz * dz) < 0.254) {
-                return InterpResult(fail(1, "start point too close to probe point (G38.x needs 0.254 mm at least)"));
+            if (line != nullptr && probe_must_move && line->to == line->from) {
+                return InterpResult(fail(1, "start point too close to probe point (G38.2/G38.4 to where the tool is)"));
             }
         }
         probe_result_.emplace();
@@ -232,6 +238,10 @@ std::optional<Diagnostic> NgcRunner::back_off_after_probe(std::vector<Move>& pen
     double back[3] = {probe->from[Axis::X] - point[Axis::X], probe->from[Axis::Y] - point[Axis::Y],
                       probe->from[Axis::Z] - point[Axis::Z]};
     const double length = std::sqrt(back[0] * back[0] + back[1] * back[1] + back[2] * back[2]);
+    if (length == 0) {  // a probe of no length in X Y Z backs off nowhere (rs274's canon)
+        tool_at_ = point;
+        return std::nullopt;
+    }
     const ModalView view = executor_.modal_view();
     Block shift;
     shift.location = line_.location;

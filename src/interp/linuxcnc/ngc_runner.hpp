@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "../executor.hpp"
+#include "ngc_g7x_profile.hpp"
 #include "ngc_line.hpp"
 #include "ngc_parameters.hpp"
 #include "nckit/interp/interpreter.hpp"
@@ -98,12 +99,29 @@ private:
     [[nodiscard]] std::optional<std::filesystem::path> find_sub_file(const std::string& name) const;
     std::optional<Diagnostic> condition(double& value);
 
+    // ngc_g7x.cpp: LinuxCNC's lathe cycles G70-G72, their shape read from a subroutine.
+    struct ProfileReading {
+        std::vector<ProfileSegment> segments;
+        ZX at;  //!< where the shape has got to: #<_x> and #<_z> while it is read
+        int motion = 0;
+        bool incremental = false;
+        bool ijk_incremental = true;
+    };
+    [[nodiscard]] const Word* g7x_word() const;
+    std::optional<InterpResult> run_g7x(std::vector<Move>& pending);
+    std::optional<Diagnostic> collect_profile_line();
+    [[nodiscard]] std::optional<Diagnostic> check_g7x_words(const G7xRequest& request, const Word& cycle_word) const;
+    std::optional<Diagnostic> run_g7x_moves(const std::vector<ProfileMove>& moves, ZX from, const SourceLocation& where,
+                                            std::vector<Move>& pending);
+
     // ngc_fanuc_subs.cpp: M98 and M99.
     std::optional<InterpResult> run_fanuc_sub_words(std::vector<Move>& pending);
 
     // ngc_state.cpp: parameters LinuxCNC keeps current, and its parameter file.
     void connect_live_parameters();
     [[nodiscard]] std::optional<double> live_numbered(std::int64_t n) const;
+    //! G92.2 (offsets off, #5211-#5219 kept) and G92.3 (offsets back from them) as G92.1 / G92.
+    std::optional<Diagnostic> translate_g92_kept();
     [[nodiscard]] std::optional<double> live_named(const std::string& name) const;
     std::optional<Diagnostic> load_parameter_file();
     std::optional<Diagnostic> apply_parameters(const std::map<std::int64_t, double>& values,
@@ -163,6 +181,10 @@ private:
     std::optional<AxisVector> tool_at_;
     //! #5061-#5069 after a G38.x probe: its end point, program units, X Y Z A B C U V W.
     std::optional<std::array<double, 9>> probe_result_;
+    //! While a lathe cycle reads its shape: the shape so far.
+    std::optional<ProfileReading> profile_;
+    //! After G92.2: the G92 offsets #5211-#5219 kept for G92.3, program units (X Y Z A B C U V W).
+    std::optional<std::array<double, 9>> g92_kept_;
 };
 
 }  // namespace nckit::interp::ngc

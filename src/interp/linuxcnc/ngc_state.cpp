@@ -37,6 +37,9 @@ double NgcRunner::to_program_units(double mm) const {
 }
 
 std::optional<double> NgcRunner::axis_position(char letter) const {
+    // While a lathe cycle reads its shape, LinuxCNC's position follows the shape.
+    if (profile_ && letter == 'X') return profile_->at.imag();
+    if (profile_ && letter == 'Z') return profile_->at.real();
     for (std::size_t i = 0; i < machine_.axes.size(); ++i) {
         if (axis_from_letter(letter) == machine_.axes[i].axis) {
             auto v = executor_.read_system(5001 + static_cast<std::int64_t>(i));
@@ -66,6 +69,7 @@ std::optional<double> NgcRunner::live_numbered(std::int64_t n) const {
         if (config == nullptr) return std::nullopt;
         return config->kind == AxisKind::rotary ? config->home : to_program_units(config->home);
     }
+    if (n >= 5211 && n <= 5219 && g92_kept_) return (*g92_kept_)[static_cast<std::size_t>(n - 5211)];
     if (n >= 5211 && n <= 5219) {
         auto axis = axis_of(5211);
         if (!axis) return std::nullopt;
@@ -292,6 +296,53 @@ std::optional<Diagnostic> NgcRunner::save_parameters() const {
     if (!file) {
         return error_at(make_location(std::make_shared<const std::string>(options_.retained_file.string()), 0, 0),
                         "parameter-file", "cannot write the parameter file");
+    }
+    return std::nullopt;
+}
+
+std::optional<Diagnostic> NgcRunner::translate_g92_kept() {
+    // LinuxCNC's G52 and G92 share one offset. G92.2 sets it to zero but keeps #5211-#5219;
+    // G92.3 sets it back from them. nckit's Executor keeps G52 and G92 apart: G92.2 clears both
+    // (G92.1, and G52 at zero in a block of its own), G92.3 becomes a G92 to the kept values.
+    Word* keep = nullptr;
+    Word* restore = nullptr;
+    for (Word& w : block_.words) {
+        if (w.letter != 'G') continue;
+        if (std::abs(w.value - 92.2) < 1e-9) keep = &w;
+        if (std::abs(w.value - 92.3) < 1e-9) restore = &w;
+        if (w.value == 92 || std::abs(w.value - 92.1) < 1e-9 || w.value == 52) g92_kept_.reset();
+    }
+    if (keep != nullptr) {
+        std::array<double, 9> kept{};
+        for (std::size_t i = 0; i < kept.size(); ++i)
+            kept[i] = live_numbered(5211 + static_cast<std::int64_t>(i)).value_or(0.0);
+        Block zero_g52;
+        zero_g52.location = block_.location;
+        zero_g52.words.push_back(Word{'G', 52.0, true, keep->column, -1});
+        for (const AxisConfig& a : machine_.axes)
+            zero_g52.words.push_back(Word{letter(a.axis), 0.0, true, keep->column, -1});
+        std::vector<Move> events;
+        bool program_end = false;
+        if (auto error = executor_.run(zero_g52, events, program_end)) return error;
+        keep->value = 92.1;
+        g92_kept_ = kept;
+        return std::nullopt;
+    }
+    if (restore == nullptr) return std::nullopt;
+    if (!g92_kept_) {
+        // The offsets already are what the parameters say: nothing changes.
+        std::erase_if(block_.words, [](const Word& w) { return w.letter == 'G' && std::abs(w.value - 92.3) < 1e-9; });
+        return std::nullopt;
+    }
+    const std::array<double, 9> kept = *g92_kept_;
+    g92_kept_.reset();
+    restore->value = 92;
+    const std::uint32_t column = restore->column;
+    for (std::size_t i = 0; i < kept.size(); ++i) {
+        const char axis = axis_letters[i];
+        const std::optional<double> here = axis_position(axis);
+        if (!here) continue;
+        block_.words.push_back(Word{axis, *here - kept[i], true, column, -1});
     }
     return std::nullopt;
 }

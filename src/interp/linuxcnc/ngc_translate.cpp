@@ -56,7 +56,12 @@ std::optional<Diagnostic> NgcRunner::translate_block() {
         for (const Word& w : block_.words) {
             if (w.letter == 'G' && w.value == 43) column = w.column;
         }
-        block_.words.push_back(Word{'H', static_cast<double>(executor_.modal_view().tool), true, column, -1});
+        // A tool change in the same block comes first: G43 then takes the new tool.
+        double tool = static_cast<double>(executor_.modal_view().tool);
+        const bool changes = std::any_of(block_.words.begin(), block_.words.end(),
+                                         [](const Word& w) { return w.letter == 'M' && w.value == 6; });
+        if (const Word* t = find_word(block_, 'T'); t != nullptr && changes) tool = t->value;
+        block_.words.push_back(Word{'H', tool, true, column, -1});
     }
     comp_from_loaded_tool();
     for (Word& w : block_.words) {
