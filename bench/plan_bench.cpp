@@ -90,7 +90,9 @@ BENCHMARK(BM_ProfileAt);
 
 //! A CAM-style chain: 100,000 lines of 0.01–0.1 mm along a wavy curve at F3000, G64, each
 //! pushed and popped through the streaming planner with S-curve look-ahead. Items are moves.
-std::vector<nckit::Move> short_segment_chain(std::size_t count) {
+//! With `zigzag_rad` each line turns that much more, alternately left and right, so that no
+//! two lines can be merged into one chord.
+std::vector<nckit::Move> short_segment_chain(std::size_t count, double zigzag_rad = 0) {
     std::mt19937_64 random(3);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     std::vector<nckit::Move> moves;
@@ -100,9 +102,10 @@ std::vector<nckit::Move> short_segment_chain(std::size_t count) {
     for (std::size_t i = 0; i < count; ++i) {
         const double step = 0.01 + 0.09 * unit(random);
         heading += 0.02 * std::sin(static_cast<double>(i) * 0.01) + 0.002 * (unit(random) - 0.5);
+        const double zig_rad = (i % 2 == 0 ? 0.5 : -0.5) * zigzag_rad;
         nckit::AxisVector to = at;
-        to[nckit::Axis::X] += step * std::cos(heading);
-        to[nckit::Axis::Y] += step * std::sin(heading);
+        to[nckit::Axis::X] += step * std::cos(heading + zig_rad);
+        to[nckit::Axis::Y] += step * std::sin(heading + zig_rad);
         nckit::Line line{at, to, nckit::Feed{nckit::FeedMode::per_minute, 3000, 0}, false, {}};
         nckit::Move move;
         move.what = line;
@@ -112,8 +115,7 @@ std::vector<nckit::Move> short_segment_chain(std::size_t count) {
     return moves;
 }
 
-void BM_PlannerShortSegmentsSCurve(benchmark::State& state) {
-    const std::vector<nckit::Move> moves = short_segment_chain(100000);
+void plan_chain(benchmark::State& state, const std::vector<nckit::Move>& moves) {
     nckit::MachineConfig machine = nckit::default_mill();
     nckit::PlannerOptions options;
     options.profile = nckit::ProfileKind::scurve;
@@ -133,7 +135,18 @@ void BM_PlannerShortSegmentsSCurve(benchmark::State& state) {
     // Memory per move: each output piece, and at most window_moves window entries.
     state.counters["piece_bytes"] = static_cast<double>(sizeof(nckit::TrajectoryPiece));
 }
+
+void BM_PlannerShortSegmentsSCurve(benchmark::State& state) {
+    plan_chain(state, short_segment_chain(100000));
+}
 BENCHMARK(BM_PlannerShortSegmentsSCurve)->Unit(benchmark::kMillisecond);
+
+// The same chain with a 0.3 rad zig-zag at every vertex: every line is planned as a segment of
+// its own with a transition at each corner (the chain smoother merges nothing here).
+void BM_PlannerZigZagSCurve(benchmark::State& state) {
+    plan_chain(state, short_segment_chain(100000, 0.3));
+}
+BENCHMARK(BM_PlannerZigZagSCurve)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

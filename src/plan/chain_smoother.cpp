@@ -159,6 +159,10 @@ bool ChainSmoother::pop(Move& out) {
 // (K alone pulls every vertex in by about n·h²/(4r)), while the noise of the decimals, at the
 // highest frequencies of the chain, is removed as by K.
 void ChainSmoother::advance() {
+    // A chain of at most three lines has only fixed vertices (the first and last two): nothing
+    // reads its residuals, whose reflections over so short a chain would cost most of the time of
+    // a program of corners (every line a chain of its own).
+    if (ended_ && n_ <= 3) next_residual_ = std::max(next_residual_, n_ + 1);
     while (next_residual_ <= n_ && (ended_ || next_residual_ + half <= n_)) {
         const long j = next_residual_;
         // Inside the chain the taps read the stored vertices directly; near its ends through
