@@ -4,6 +4,8 @@
 #include <cmath>
 #include <utility>
 
+#include "chord_distance.hpp"
+
 namespace nckit::plan_detail {
 
 namespace {
@@ -14,23 +16,6 @@ constexpr long compact_after = 1024;
 
 double norm3(const std::array<double, 3>& v) {
     return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-}
-
-double distance2_to_chord(const std::array<double, 3>& p, const std::array<double, 3>& a,
-                          const std::array<double, 3>& b) {
-    double dd = 0;
-    double t = 0;
-    for (std::size_t i = 0; i < 3; ++i) {
-        dd += (b[i] - a[i]) * (b[i] - a[i]);
-        t += (p[i] - a[i]) * (b[i] - a[i]);
-    }
-    t = dd > 0 ? std::clamp(t / dd, 0.0, 1.0) : 0.0;
-    double d2 = 0;
-    for (std::size_t i = 0; i < 3; ++i) {
-        const double e = p[i] - a[i] - t * (b[i] - a[i]);
-        d2 += e * e;
-    }
-    return d2;
 }
 
 }  // namespace

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "chord_distance.hpp"
+
 namespace nckit::plan_detail {
 
 namespace {
@@ -24,19 +26,7 @@ double distance3(const AxisVector& a, const AxisVector& b) {
 
 //! Distance from p to the XYZ chord a–b.
 double to_chord(const AxisVector& p, const AxisVector& a, const AxisVector& b) {
-    double dd = 0;
-    double t = 0;
-    for (std::size_t i = 0; i < 3; ++i) {
-        dd += (b[i] - a[i]) * (b[i] - a[i]);
-        t += (p[i] - a[i]) * (b[i] - a[i]);
-    }
-    t = dd > 0 ? std::clamp(t / dd, 0.0, 1.0) : 0.0;
-    double d2 = 0;
-    for (std::size_t i = 0; i < 3; ++i) {
-        const double e = p[i] - a[i] - t * (b[i] - a[i]);
-        d2 += e * e;
-    }
-    return std::sqrt(d2);
+    return std::sqrt(distance2_to_chord(p, a, b));
 }
 
 //! Points along s in [s0, s1] of a segment, as chords; a line is its own chord, an arc gets

@@ -11,30 +11,18 @@
 
 #include "../../src/plan/chain_smoother.hpp"
 #include "move_builder.hpp"
+#include "trajectory_check.hpp"
 
 namespace nckit {
 namespace {
 
 using plan_detail::ChainSmoother;
 
-double distance_to_segment(const AxisVector& p, const AxisVector& a, const AxisVector& b) {
-    double dd = 0;
-    double t = 0;
-    for (std::size_t i = 0; i < 3; ++i) {
-        dd += (b[i] - a[i]) * (b[i] - a[i]);
-        t += (p[i] - a[i]) * (b[i] - a[i]);
-    }
-    t = dd > 0 ? std::clamp(t / dd, 0.0, 1.0) : 0.0;
-    double d2 = 0;
-    for (std::size_t i = 0; i < 3; ++i) d2 += std::pow(p[i] - a[i] - t * (b[i] - a[i]), 2);
-    return std::sqrt(d2);
-}
-
 double distance_to_polyline(const AxisVector& p, const std::vector<Move>& lines) {
     double best = 1e300;
     for (const Move& m : lines) {
         const Line& l = std::get<Line>(m.what);
-        best = std::min(best, distance_to_segment(p, l.from, l.to));
+        best = std::min(best, plan_test::distance_to_chord(p, l.from, l.to));
     }
     return best;
 }

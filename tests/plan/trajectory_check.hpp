@@ -37,6 +37,21 @@ inline PathSegment programmed_segment(const Move& move) {
     return {};
 }
 
+//! mm: the distance from p to the XYZ chord a–b (its point a if it has no length), computed
+//! here apart from the planner's own geometry.
+inline double distance_to_chord(const AxisVector& p, const AxisVector& a, const AxisVector& b) {
+    double dd = 0;
+    double t = 0;
+    for (std::size_t i = 0; i < 3; ++i) {
+        dd += (b[i] - a[i]) * (b[i] - a[i]);
+        t += (p[i] - a[i]) * (b[i] - a[i]);
+    }
+    t = dd > 0 ? std::clamp(t / dd, 0.0, 1.0) : 0.0;
+    double d2 = 0;
+    for (std::size_t i = 0; i < 3; ++i) d2 += (p[i] - a[i] - t * (b[i] - a[i])) * (p[i] - a[i] - t * (b[i] - a[i]));
+    return std::sqrt(d2);
+}
+
 //! mm: the largest distance, over 65 points of a blend or transition piece, from the programmed
 //! path of `moves` (each taken as 4,096 chords; lines exactly).
 inline double deviation_from(const TrajectoryPiece& piece, const std::vector<const Move*>& moves) {
@@ -51,17 +66,7 @@ inline double deviation_from(const TrajectoryPiece& piece, const std::vector<con
             AxisVector a = position_at(g, 0.0);
             for (int c = 1; c <= chords; ++c) {
                 const AxisVector b = position_at(g, g.length * c / chords);
-                double dd = 0;
-                double t = 0;
-                for (std::size_t i = 0; i < 3; ++i) {
-                    dd += (b[i] - a[i]) * (b[i] - a[i]);
-                    t += (p[i] - a[i]) * (b[i] - a[i]);
-                }
-                t = dd > 0 ? std::clamp(t / dd, 0.0, 1.0) : 0.0;
-                double d2 = 0;
-                for (std::size_t i = 0; i < 3; ++i)
-                    d2 += (p[i] - a[i] - t * (b[i] - a[i])) * (p[i] - a[i] - t * (b[i] - a[i]));
-                best = std::min(best, std::sqrt(d2));
+                best = std::min(best, distance_to_chord(p, a, b));
                 a = b;
             }
         }
