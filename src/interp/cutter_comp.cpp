@@ -11,6 +11,9 @@
 
 namespace nckit {
 
+using interp::comp::in_plane;
+using interp::comp::set_in_plane;
+
 using interp::comp::Segment;
 
 namespace {
@@ -18,14 +21,6 @@ namespace {
 // Events and off-plane moves held behind one planar move; a program that piles up more than
 // this while compensation is on has lost its contour.
 constexpr std::size_t max_held = 100000;
-
-Vec2 in_plane(const AxisVector& v, PlaneAxes p) {
-    return {v[p.first], v[p.second]};
-}
-void set_in_plane(AxisVector& v, PlaneAxes p, Vec2 point) {
-    v[p.first] = point.x;
-    v[p.second] = point.y;
-}
 
 }  // namespace
 

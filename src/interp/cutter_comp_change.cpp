@@ -11,17 +11,8 @@
 
 namespace nckit {
 
-namespace {
-
-Vec2 in_plane(const AxisVector& v, PlaneAxes p) {
-    return {v[p.first], v[p.second]};
-}
-void set_in_plane(AxisVector& v, PlaneAxes p, Vec2 point) {
-    v[p.first] = point.x;
-    v[p.second] = point.y;
-}
-
-}  // namespace
+using interp::comp::in_plane;
+using interp::comp::set_in_plane;
 
 std::optional<CompError> CutterCompensator::next_with_new_offset(Move move, std::vector<Move>& out) {
     const double new_radius_mm = *pending_radius_mm_;

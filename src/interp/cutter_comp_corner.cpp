@@ -13,20 +13,15 @@
 
 namespace nckit {
 
+using interp::comp::in_plane;
+using interp::comp::set_in_plane;
+
 using interp::comp::Corner;
 using interp::comp::Segment;
 
 namespace {
 
 constexpr double two_pi = 2.0 * std::numbers::pi;
-
-Vec2 in_plane(const AxisVector& v, PlaneAxes p) {
-    return {v[p.first], v[p.second]};
-}
-void set_in_plane(AxisVector& v, PlaneAxes p, Vec2 point) {
-    v[p.first] = point.x;
-    v[p.second] = point.y;
-}
 
 //! The planar element a Line or Arc draws.
 Segment segment_of(const Move& move, PlaneAxes p) {

@@ -6,8 +6,18 @@
 #include <optional>
 
 #include "nckit/core/vec2.hpp"
+#include "nckit/interp/arc_geometry.hpp"
 
 namespace nckit::interp::comp {
+
+//! A machine position's coordinates in the plane, and the position with them replaced.
+[[nodiscard]] inline Vec2 in_plane(const AxisVector& v, PlaneAxes p) {
+    return {v[p.first], v[p.second]};
+}
+inline void set_in_plane(AxisVector& v, PlaneAxes p, Vec2 point) {
+    v[p.first] = point.x;
+    v[p.second] = point.y;
+}
 
 //! A programmed or compensated element in the plane.
 struct Segment {
