@@ -21,6 +21,16 @@
 
 namespace nckit::interp::ngc {
 
+// A G70-G72 shape while its subroutine's lines are read, not run. At namespace scope: clang
+// cannot default-construct a nested class with member initialisers inside std::optional.
+struct ProfileReading {
+    std::vector<ProfileSegment> segments;
+    ZX at;  //!< where the shape has got to: #<_x> and #<_z> while it is read
+    int motion = 0;
+    bool incremental = false;
+    bool ijk_incremental = true;
+};
+
 class NgcRunner {
 public:
     NgcRunner(const MachineConfig& machine, ProgramSource main, const InterpreterOptions& options);
@@ -100,13 +110,6 @@ private:
     std::optional<Diagnostic> condition(double& value);
 
     // ngc_g7x.cpp: LinuxCNC's lathe cycles G70-G72, their shape read from a subroutine.
-    struct ProfileReading {
-        std::vector<ProfileSegment> segments;
-        ZX at;  //!< where the shape has got to: #<_x> and #<_z> while it is read
-        int motion = 0;
-        bool incremental = false;
-        bool ijk_incremental = true;
-    };
     [[nodiscard]] const Word* g7x_word() const;
     std::optional<InterpResult> run_g7x(std::vector<Move>& pending);
     std::optional<Diagnostic> collect_profile_line();
