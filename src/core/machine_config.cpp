@@ -128,6 +128,10 @@ void read_machine(const toml::table& table, MachineConfig& config, ConfigSink& s
     if (auto i = reader.choice("gcode_system", Need::optional, "gcode_system", {"A", "B", "C"})) {
         config.gcode_system = systems[*i];
     }
+    constexpr std::array controls{LatheControl::fanuc, LatheControl::haas};
+    if (auto i = reader.choice("lathe_control", Need::optional, "lathe_control", {"fanuc", "haas"})) {
+        config.lathe_control = controls[*i];
+    }
     if (std::optional<std::string> codes = reader.text("startup_gcodes", Need::optional)) {
         // Only G words: the interpreter reads them as a block before the program and reports a
         // code it does not know at this key's place.
@@ -388,6 +392,12 @@ MachineConfig read_document(const toml::table& document, ConfigSink& sink) {
     if (system != nullptr && config.gcode_system != GCodeSystem::none && !lathe) {
         // Fanuc's systems A, B and C are a lathe's (X and Z, no Y): a mill has one set of codes.
         sink.error(system->source(), "config-value", "'gcode_system' is for lathes (X and Z axes, no Y)");
+    }
+    const toml::node* control = machine_table != nullptr ? machine_table->get("lathe_control") : nullptr;
+    if (control != nullptr && config.lathe_control == LatheControl::haas && config.gcode_system != GCodeSystem::a) {
+        // A Haas lathe writes G98/G99 feeds, U W increments and G90/G92/G94 single cycles: the
+        // codes of Fanuc's system A, which the Haas-only readings refine.
+        sink.error(control->source(), "config-value", "'lathe_control = \"haas\"' needs 'gcode_system = \"A\"'");
     }
     if (const toml::table* spindle = root.table("spindle", Need::optional)) {
         read_spindle(*spindle, config, sink);

@@ -1,6 +1,7 @@
 // The words a lathe cycle block may hold. A cycle's letters mean their own things (G71 U is a
 // depth of cut, not a move), so these blocks are checked here instead of by check_words.
 #include <cmath>
+#include <string>
 #include <string_view>
 
 #include <fmt/format.h>
@@ -41,6 +42,9 @@ const Word* Executor::cycle_word(char written) const {
 std::optional<Diagnostic> Executor::check_lathe_cycle_words(GCode cycle) const {
     const std::string name = lathe_code_name(machine_.gcode_system, cycle);
     const std::string_view allowed = cycle_letters(cycle);
+    const bool haas = machine_.lathe_control == LatheControl::haas;
+    std::string ignored;  // G71's words on a Haas G70, read and not used
+    std::uint32_t ignored_column = 0;
     for (const Word& word : block_->words) {
         const char c = word.letter;
         if (c == 'G' || c == 'M' || c == 'F' || c == 'S' || c == 'T') continue;
@@ -51,9 +55,19 @@ std::optional<Diagnostic> Executor::check_lathe_cycle_words(GCode cycle) const {
             continue;
         }
         if (allowed.find(c) == std::string_view::npos) {
-            if (cycle == lathe_finish && std::string_view("UWDIK").find(c) != std::string_view::npos) {
-                // Haas class programs copy G71's words onto G70; neither Fanuc nor Haas gives G70
-                // an allowance or a depth, so the words have no meaning to run.
+            const bool roughing_word = std::string_view("UWDIK").find(c) != std::string_view::npos;
+            if (cycle == lathe_finish && roughing_word && haas) {
+                // Programs for Haas lathes copy G71's one-block words onto G70. No Haas manual
+                // gives G70 an allowance or a depth; the finish follows the P-Q blocks either
+                // way, so on a Haas machine the words are read, not used, and reported.
+                if (ignored.empty()) ignored_column = word.column;
+                if (ignored.find(c) == std::string::npos)
+                    ignored += ignored.empty() ? std::string(1, c) : fmt::format(" {}", c);
+                continue;
+            }
+            if (cycle == lathe_finish && roughing_word) {
+                // Neither Fanuc nor Haas gives G70 an allowance or a depth: on a Fanuc control the
+                // words have no meaning to run.
                 return error(word.column, "unused-word",
                              fmt::format("{} takes no {} word: {} P Q finishes the shape as programmed ({} is a "
                                          "word of the roughing cycles)",
@@ -67,6 +81,14 @@ std::optional<Diagnostic> Executor::check_lathe_cycle_words(GCode cycle) const {
                 if (auto e = check_axis_letter(word)) return e;
             }
         }
+    }
+    if (!ignored.empty() && options_.on_warning) {
+        Diagnostic warning = error(ignored_column, "ignored-word",
+                                   fmt::format("{} does not use {} (words of the roughing cycles): on this Haas lathe "
+                                               "they are read and ignored; {} P Q finishes the shape as programmed",
+                                               name, ignored, name));
+        warning.severity = Severity::warning;
+        options_.on_warning(warning);
     }
     if (const Word* f = words_.word('F'); f != nullptr && f->value <= 0) {
         return error(f->column, "bad-value", fmt::format("{} needs a positive F", name));

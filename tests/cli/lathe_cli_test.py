@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """The example lathe as a user runs it: a Fanuc program without G98/G99 feeds per revolution
 and `nckit plan` times it from the spindle speed; a code of another G-code system, a bad
-cycle (the one-block forms' words among them) and a bad offset write stop with FILE:LINE:COL: error: and exit status 2."""
+cycle (the one-block forms' words among them) and a bad offset write stop with FILE:LINE:COL: error: and exit status 2.
+On the Haas lathe G71's words on G70 run with a warning; a Haas lathe in system B and a G70
+with an address and no number stop with exit status 2."""
 import json
 import pathlib
 import sys
@@ -11,6 +13,33 @@ from cli_checks import check, run_nckit, summary
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 LATHE = ROOT / "examples" / "machines" / "lathe.toml"
+HAAS = ROOT / "examples" / "machines" / "haas_lathe.toml"
+HAAS_G70 = "G97 S500 M03\nG00 X2. Z0.1\nG71 P10 Q20 U0.02 W0 D0.1 F0.01\nN10 G00 X1.\nG01 Z-1.\nN20 X2.\n"
+
+
+def check_haas(nckit: str, tmp: pathlib.Path) -> None:
+    """The Haas lathe: G71's U W D on G70 are read with a warning and the program plans; the same
+    block on the Fanuc lathe, a Haas key on a system-B lathe and `G70 P10 Q` are errors."""
+    program = tmp / "haas_g70.nc"
+    program.write_text(HAAS_G70 + "G70 P10 Q20 U0.02 W0 D0.05 F0.005\nM30\n")
+    run = run_nckit(nckit, "plan", program, "--machine", HAAS, "--json", text=True)
+    check(run.returncode == 0, f"Haas G70 with U W D plans ({run.stderr.strip()})")
+    check("haas_g70.nc:7:13: warning: G70 does not use U W D" in run.stderr,
+          f"the ignored words are reported at the U ({run.stderr.strip()})")
+    run = run_nckit(nckit, "plan", program, "--machine", LATHE, text=True)
+    check(run.returncode == 2 and "haas_g70.nc:7:13: error:" in run.stderr, "the Fanuc lathe refuses them")
+    no_q = tmp / "haas_no_q.nc"
+    no_q.write_text(HAAS_G70 + "G70 P10 Q\nM30\n")
+    run = run_nckit(nckit, "plan", no_q, "--machine", HAAS, text=True)
+    check(run.returncode == 2 and "haas_no_q.nc:7:" in run.stderr and ": error:" in run.stderr,
+          f"G70 P10 Q: exit 2 ({run.stderr.strip()})")
+    system_b = tmp / "haas_b.toml"
+    system_b.write_text(HAAS.read_text().replace('gcode_system = "A"', 'gcode_system = "B"')
+                        .replace("G20 G40 G97 G99", "G20 G40 G90 G95 G97"))
+    run = run_nckit(nckit, "plan", program, "--machine", system_b, text=True)
+    check(run.returncode == 2 and "haas_b.toml:10:17: error:" in run.stderr,
+          f"lathe_control = haas in system B: exit 2 at the key ({run.stderr.strip()})")
+    check(run.stdout == "", "no report from a bad machine file")
 
 
 def main() -> int:
@@ -58,6 +87,7 @@ def main() -> int:
             run = run_nckit(nckit, "plan", path, "--machine", LATHE, text=True)
             check(run.returncode == 2 and where in run.stderr, f"{name}: {where} exit 2 ({run.stderr.strip()})")
             check(run.stdout == "", f"{name}: no report")
+        check_haas(nckit, pathlib.Path(tmp))
     return summary()
 
 

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Runs every real lathe program beside this file through `nckit moves --json` on the machine
 programs.csv names for it (corpus_lathe.toml: the example lathe, Fanuc G-code system A, with
-longer travel; corpus_lathe_b.toml: the same in system B) and reports how many nckit accepts,
+longer travel; corpus_lathe_b.toml: the same in system B; corpus_lathe_haas.toml: the Haas lathe,
+system A read as a Haas control reads it) and reports how many nckit accepts,
 in all and per source repository. For each accepted program the
 moves are checked: every cutting move has a positive feed, and every roughing feed of a G71 or
 G73 (lines and arcs, the arcs in chords) stays on or outside the finished shape that its G70
@@ -119,12 +120,18 @@ def main() -> int:
     listed = read_list()
     programs = sorted(HERE.glob("*.nc"))
     accepted = 0
+    # The corpus as it grew: the first 32 programs (01-34), the 41 after heu-icicles (to 43), all.
+    stages = {34: [0, 0], 43: [0, 0]}
     failures = [f"{p.name}: not in programs.csv" for p in programs if p.name not in listed]
     per_source = {}
     for program in programs:
         machine, source = listed.get(program.name, ("corpus_lathe.toml", "?"))
         tally = per_source.setdefault(source, [0, 0])
         tally[1] += 1
+        number = int(program.name.split("_")[0])
+        in_stages = [stage for last, stage in stages.items() if number <= last]
+        for stage in in_stages:
+            stage[1] += 1
         run = subprocess.run([args.nckit, "moves", str(program), "--machine", str(HERE / machine), "--json"],
                              capture_output=True, text=True, timeout=120)
         if run.returncode != 0:
@@ -136,6 +143,8 @@ def main() -> int:
             continue
         accepted += 1
         tally[0] += 1
+        for stage in in_stages:
+            stage[0] += 1
         moves = [json.loads(line) for line in run.stdout.splitlines() if line.strip()]
         problems = check_program(program, moves)
         failures += [f"{program.name}: {p}" for p in problems]
@@ -143,6 +152,8 @@ def main() -> int:
             print(f"| {program.name} | accepted | {len(moves)} moves{'; ' + problems[0] if problems else ''} |")
     for source, (n_ok, n_all) in per_source.items():
         print(f"{source}: accepted {n_ok} of {n_all}")
+    for last, (n_ok, n_all) in stages.items():
+        print(f"programs 01-{last}: accepted {n_ok} of {n_all} ({100.0 * n_ok / max(1, n_all):.0f} %)")
     print(f"accepted {accepted} of {len(programs)} ({100.0 * accepted / max(1, len(programs)):.0f} %)")
     for f in failures:
         print(f"FAIL {f}")

@@ -86,6 +86,12 @@ enum class CompStartup {
 //! A Fanuc lathe's G-code system (docs/gcode-lathe.md has the table). `none`: the mill codes
 //! (and LinuxCNC's lathe codes), as for every machine without the key.
 enum class GCodeSystem { none, a, b, c };
+//! Whose lathe control a system-A lathe is (docs/gcode-lathe.md, "Haas lathes"): where Haas reads
+//! a block differently from Fanuc, nckit follows the machine's maker.
+enum class LatheControl {
+    fanuc,  //!< Fanuc 0i-T and compatible (the default)
+    haas    //!< Haas lathe: G70 reads G71's U W D I K copied onto it and does not use them
+};
 //! Which G-code dialect programs are read in (docs/gcode-linuxcnc.md lists the differences).
 enum class Dialect {
     fanuc,    //!< Fanuc with Custom Macro B (the default)
@@ -123,6 +129,7 @@ struct MachineConfig {
     ProfileKind profile = ProfileKind::scurve;
     CompStartup cutter_comp_startup = CompStartup::type_b;  //!< `cutter_comp_startup = "type_a"`
     GCodeSystem gcode_system = GCodeSystem::none;           //!< `gcode_system = "A"` (lathes only)
+    LatheControl lathe_control = LatheControl::fanuc;       //!< `lathe_control = "haas"` (system A only)
     //! G codes in force at power-up (`startup_gcodes = "G18 G21 G40 G97 G99"`), read in the
     //! machine's G-code system before the program's first block; empty: none beyond the defaults.
     std::string startup_gcodes;
