@@ -75,7 +75,11 @@ def main() -> int:
         unclosed = program("unclosed.nc", "G21 G90 G1 F100\nX1 (a (b c)\nX2\nM30\n")
         r = run(nckit, "moves", unclosed)
         check(r.returncode == 2 and r.stdout == "" and f"{unclosed}:2:4: error: comment is not closed" in r.stderr,
-              f"an unclosed nested comment is an error at its inner '(' ({r.stderr.strip()})")
+              f"an unclosed comment is an error at its '(' ({r.stderr.strip()})")
+        inner = program("inner.nc", "G21 G90 G1 F100\nX1 (a (b (c) d\nM30\n")
+        r = run(nckit, "check", inner)
+        check(r.returncode == 2 and f"{inner}:2:7: error: comment is not closed: the '(' here, inside the comment "
+              "opened at column 4" in r.stderr, f"an inner '(' left open is the error, where it opens ({r.stderr.strip()})")
 
         # Nothing done is no success.
         empty = program("empty.ngc", "\n\n")
