@@ -1,6 +1,7 @@
 #include "nckit/gcode/parser.hpp"
 
 #include <cstdint>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -90,26 +91,31 @@ private:
         return true;
     }
 
+    //! A comment runs to the ')' that closes its '(': parentheses inside it come in pairs and
+    //! nest, as in the example programs of Haas's mill operator's manual (`(0.01" finish pass
+    //! (K) on sides)`). One pass over the line bounds it.
     std::optional<Diagnostic> skip_comment() {
-        std::uint32_t open = column();
         std::size_t text_start = pos_ + 1;
+        std::vector<std::uint32_t> open_columns{column()};  // the '(' not closed yet, outermost first
         for (++pos_; pos_ < line_.size(); ++pos_) {
-            if (line_[pos_] == ')') {
+            if (line_[pos_] == '(') {
+                open_columns.push_back(column());
+            } else if (line_[pos_] == ')') {
+                open_columns.pop_back();
+                if (!open_columns.empty()) continue;
                 // The first comment is kept: `#3000=1 (MESSAGE)` shows it with the alarm.
                 if (block_.comment.empty()) block_.comment.assign(line_.substr(text_start, pos_ - text_start));
                 ++pos_;
                 return std::nullopt;
             }
-            if (line_[pos_] == '(') {
-                // RS-274/NGC and LinuxCNC refuse it; no Fanuc or Haas manual says whether the
-                // first ')' ends the comment, so guessing could run the rest of it as code.
-                return error(column(), "syntax",
-                             fmt::format("'(' inside a comment (opened at column {}): comments do not nest; "
-                                         "write the inner parentheses another way, such as [ ]",
-                                         open));
-            }
         }
-        return error(open, "syntax", "comment is not closed: '(' without ')'");
+        if (open_columns.size() > 1) {
+            return error(open_columns.back(), "syntax",
+                         fmt::format("comment is not closed: the '(' here, inside the comment opened at column {}, "
+                                     "has no ')' (parentheses inside a comment come in pairs)",
+                                     open_columns.front()));
+        }
+        return error(open_columns.front(), "syntax", "comment is not closed: '(' without ')'");
     }
 
     //! `,R5` or `,C2` (blanks allowed after the comma, as in `Y 0, C 8`): Fanuc's corner

@@ -140,16 +140,11 @@ std::optional<CompError> CutterCompensator::start_up(Move move, std::vector<Move
                                  "radius {:.4f} mm",
                                  distance, radius_mm_));
     }
+    programmed_ = Programmed::straight(from, to, line.rapid);
     Vec2 normal = static_cast<double>(side_) * nckit::left_normal(nckit::unit(to - from));
     set_in_plane(line.to, p, to + radius_mm_ * normal);
     if (leave_from_tool_) line.from = tool_;  // the geometry stays the programmed one, as LinuxCNC
     leave_from_tool_ = false;
-    programmed_ = Programmed{};
-    programmed_.start[0] = from.x;
-    programmed_.start[1] = from.y;
-    programmed_.end[0] = to.x;
-    programmed_.end[1] = to.y;
-    programmed_.rapid = line.rapid;
     tool_ = line.to;
     held_.clear();
     held_.push_back(std::move(move));

@@ -56,12 +56,7 @@ void CutterCompensator::hold_restarted(Move move) {
     const Vec2 end = in_plane(line.to, p);
     before_ = programmed_;
     has_before_ = false;  // no corner joins the two: nothing to keep clear of behind
-    programmed_ = Programmed{};
-    programmed_.start[0] = start.x;
-    programmed_.start[1] = start.y;
-    programmed_.end[0] = end.x;
-    programmed_.end[1] = end.y;
-    programmed_.rapid = line.rapid;
+    programmed_ = Programmed::straight(start, end, line.rapid);
     line.from = tool_;
     const Vec2 normal = static_cast<double>(side_) * nckit::left_normal(nckit::unit(end - start));
     set_in_plane(line.to, p, end + radius_mm_ * normal);

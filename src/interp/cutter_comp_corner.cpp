@@ -115,6 +115,16 @@ Segment CutterCompensator::Programmed::segment() const {
     return s;
 }
 
+CutterCompensator::Programmed CutterCompensator::Programmed::straight(Vec2 start, Vec2 end, bool rapid) {
+    Programmed p;
+    p.start[0] = start.x;
+    p.start[1] = start.y;
+    p.end[0] = end.x;
+    p.end[1] = end.y;
+    p.rapid = rapid;
+    return p;
+}
+
 std::optional<CompError> CutterCompensator::next_planar(Move move, std::vector<Move>& out) {
     PlaneAxes p = plane_axes(plane_);
     const Segment a = programmed_.segment();
@@ -212,19 +222,14 @@ std::optional<CompError> CutterCompensator::next_planar(Move move, std::vector<M
     // The new move is held with its provisional end r beside the contour.
     before_ = programmed_;
     has_before_ = !held_start_up_;
-    programmed_ = Programmed{};
-    programmed_.arc = b.arc;
-    programmed_.start[0] = b.start.x;
-    programmed_.start[1] = b.start.y;
-    programmed_.end[0] = b.end.x;
-    programmed_.end[1] = b.end.y;
-    if (const auto* arc = std::get_if<Arc>(&move.what)) {
+    const auto* programmed_arc = std::get_if<Arc>(&move.what);
+    programmed_ = Programmed::straight(b.start, b.end, programmed_arc == nullptr && std::get<Line>(move.what).rapid);
+    if (programmed_arc != nullptr) {
+        programmed_.arc = true;
         programmed_.center[0] = b.center.x;
         programmed_.center[1] = b.center.y;
         programmed_.turn = b.turn;
-        programmed_.sweep_rad = arc_sweep_rad(*arc);
-    } else {
-        programmed_.rapid = std::get<Line>(move.what).rapid;
+        programmed_.sweep_rad = arc_sweep_rad(*programmed_arc);
     }
     AxisVector from = tool_;
     if (interp::comp::shrunk_to_center(*b_off)) {

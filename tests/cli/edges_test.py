@@ -68,6 +68,19 @@ def main() -> int:
               "check stops at --max-errors")
         check(run(nckit, "check", ROOT / "examples" / "01_mill_pocket.ngc").returncode == 0, "a clean program checks 0")
 
+        # Comments nest as Haas's example programs write them; one left open is an error where it opens.
+        nested = program("nested.nc", "G21 G90 G1 F100 (T2 #10 drill (for the .194 hole))\nX1 ((a) b)\nM30\n")
+        r = run(nckit, "moves", nested)
+        check(r.returncode == 0 and r.stdout.startswith("G1 X1.0000 Y0.0000"), f"nested comments are comments ({r.stderr.strip()})")
+        unclosed = program("unclosed.nc", "G21 G90 G1 F100\nX1 (a (b c)\nX2\nM30\n")
+        r = run(nckit, "moves", unclosed)
+        check(r.returncode == 2 and r.stdout == "" and f"{unclosed}:2:4: error: comment is not closed" in r.stderr,
+              f"an unclosed comment is an error at its '(' ({r.stderr.strip()})")
+        inner = program("inner.nc", "G21 G90 G1 F100\nX1 (a (b (c) d\nM30\n")
+        r = run(nckit, "check", inner)
+        check(r.returncode == 2 and f"{inner}:2:7: error: comment is not closed: the '(' here, inside the comment "
+              "opened at column 4" in r.stderr, f"an inner '(' left open is the error, where it opens ({r.stderr.strip()})")
+
         # Nothing done is no success.
         empty = program("empty.ngc", "\n\n")
         r = run(nckit, "moves", empty)

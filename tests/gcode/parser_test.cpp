@@ -155,10 +155,24 @@ TEST(Parser, UnclosedCommentIsAnErrorAtItsParenthesis) {
     EXPECT_EQ(error("G1 X1 (no end"), "syntax 7: comment is not closed: '(' without ')'");
 }
 
-TEST(Parser, NestedCommentIsAnErrorAtTheInnerParenthesis) {
-    EXPECT_EQ(error("G1 (a (b) c)"),
-              "syntax 7: '(' inside a comment (opened at column 4): comments do not nest; write the inner "
-              "parentheses another way, such as [ ]");
+TEST(Parser, NestedCommentEndsAtTheParenthesisThatClosesIt) {
+    // Haas's manual prints `(0.01" finish pass (K) on sides)` in its example programs.
+    Block block = fresh_block();
+    ASSERT_FALSE(parse_block("G1 (a (b) c) X2 (d)", block));
+    EXPECT_EQ(block.comment, "a (b) c");
+    ASSERT_EQ(block.words.size(), 2U);
+    EXPECT_EQ(block.words[1].letter, 'X');
+    EXPECT_EQ(block.words[1].column, 14U);
+}
+
+TEST(Parser, DeeplyNestedCommentIsOneComment) {
+    EXPECT_EQ(words("X1((tan(60)) = 1.732)Y2"), (std::vector<W>{{'X', 1, false, 1}, {'Y', 2, false, 22}}));
+}
+
+TEST(Parser, NestedCommentNotClosedIsAnErrorAtTheInnerParenthesis) {
+    EXPECT_EQ(error("G1 (a (b (c) d"),
+              "syntax 7: comment is not closed: the '(' here, inside the comment opened at column 4, has no "
+              "')' (parentheses inside a comment come in pairs)");
 }
 
 TEST(Parser, ClosingParenthesisAloneIsAnError) {

@@ -10,6 +10,7 @@
 
 #include "nckit/core/machine.hpp"
 #include "nckit/core/source_location.hpp"
+#include "nckit/core/vec2.hpp"
 #include "nckit/interp/move.hpp"
 
 namespace nckit {
@@ -70,6 +71,8 @@ private:
 
         //! The same element as the corner geometry takes it.
         [[nodiscard]] interp::comp::Segment segment() const;
+        //! A straight move from `start` to `end` in the plane (the start-up, restart and contour lines).
+        [[nodiscard]] static Programmed straight(Vec2 start, Vec2 end, bool rapid);
     };
 
     std::optional<CompError> start_up(Move move, std::vector<Move>& out);
