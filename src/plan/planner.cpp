@@ -12,6 +12,7 @@
 #include "chain_smoother.hpp"
 #include "junction.hpp"
 #include "lookahead.hpp"
+#include "pending_motion.hpp"
 #include "transition.hpp"
 #include "window_feed.hpp"
 #include "nckit/plan/segment_limits.hpp"
@@ -29,26 +30,7 @@ constexpr double min_trimmed_length = 1e-12;
 }  // namespace
 
 struct Planner::Impl {
-    //! The last motion, whose end may still be trimmed by a blend with the next one.
-    struct Pending {
-        PathSegment path;
-        double full_length = 0;  //!< programmed length, for the half-line rule
-        //! Computed when first needed: a short line of a CAM chain is usually eaten whole by the
-        //! transitions at its ends, and then its own limits never matter.
-        std::optional<ProfileLimits> limits;
-        double normal_share = 0.5;  //!< of the acceleration, for the curvature term
-        double feed_mm_s = 0;       //!< +inf for rapids
-        bool blendable = false;     //!< a G1 line or a G2/G3 arc: its ends may be rounded
-        PathControl control;
-        SourceLocation where;
-        std::int64_t sequence_number = -1;
-        //! The transition into this motion, held back until the next join is known: when that
-        //! join's transition eats the whole of this motion, both meet with a common curvature.
-        std::optional<plan_detail::Transition> entry;
-        double entry_feed_mm_s = 0;
-        SourceLocation entry_where;
-        std::int64_t entry_number = -1;
-    };
+    using Pending = plan_detail::PendingMotion;
 
     MachineConfig machine;
     PlannerOptions options;
@@ -150,45 +132,10 @@ struct Planner::Impl {
     }
 
     //! Any other corner, and every join with a jump in curvature under a jerk limit: a quintic
-    //! transition within the tolerance. Each side gives at most half its programmed length.
+    //! transition within the tolerance (pending_motion.hpp).
     bool transition(Pending& p, Pending& next, double tolerance) {
-        // Built in place: a transition is a large value, and this runs once per move of a chain.
-        auto xyz = [](const AxisVector& v) { return std::array<double, 3>{v[0], v[1], v[2]}; };
-        plan_detail::ChainStart chain;
-        if (p.entry) {
-            chain.entry_length = p.entry->curve.length;
-            chain.entry_start_d1 = xyz(p.entry->start.d1);
-        }
-        const double before_room = 0.5 * p.full_length;
-        const double after_room = 0.5 * next.path.length;
-        auto& t = next.entry.emplace();
-        if (!plan_detail::make_transition(p.path, before_room, next.path, after_room, tolerance, t,
-                                          p.entry ? &chain : nullptr)) {
-            next.entry.reset();
-            return false;
-        }
-        if (t.chained) {
-            // p is eaten by its two transitions: they meet at its middle, in its direction, with
-            // the curvature of the turn between their outer ends (transition.hpp). The one into p
-            // is rebuilt to end there; failing the tolerance, both stay as built (no curvature).
-            const auto entry = plan_detail::with_end_states(*p.entry, xyz(p.entry->start.d1), xyz(p.entry->start.d2),
-                                                            xyz(t.start.d1), xyz(t.start.d2), tolerance);
-            if (entry) {
-                plan_detail::apply(*p.entry, *entry);
-            } else if (!plan_detail::make_transition(p.path, before_room, next.path, after_room, tolerance, t)) {
-                next.entry.reset();
-                return false;
-            }
-        }
-        p.path.length -= t.trim_before;
-        const SourceLocation where = p.where;
-        const std::int64_t number = p.sequence_number;
-        const double feed = std::min(p.feed_mm_s, next.feed_mm_s);
+        if (!plan_detail::join_by_transition(p, next, tolerance)) return false;
         release_pending(false);
-        next.path = trim_start(next.path, t.trim_after);
-        next.entry_feed_mm_s = feed;
-        next.entry_where = where;
-        next.entry_number = number;
         return true;
     }
 
