@@ -87,20 +87,80 @@ double cubic_speed(double d3, double p, double room) {
     return big_q / (u * u + u * w + w * w) * (1.0 - 1e-12);
 }
 
+//! Whether an axis with bounds d1, d2, d3 keeps amax and jmax on a piece with speed limit v_top,
+//! acceleration a and jerk j, counting the S-curve's knee: at speed v below v_top the profile's
+//! |s̈| is at most min(a, sqrt(2·j·(v_top − v))) (it must come back to 0 before the speed
+//! reaches its peak <= v_top, which takes a²/(2j) of speed). Checked over intervals of
+//! δ = v_top − v, each bounded by its highest speed and its highest acceleration, so the test
+//! errs on the safe side.
+bool knee_fits(double d1, double d2, double d3, double v_top, double a, double j, double amax, double jmax) {
+    constexpr int intervals = 16;
+    const double reach = a * a / (2.0 * j);  // δ at which the knee reaches a
+    auto fits = [&](double v, double acc) {
+        v = std::max(0.0, v);
+        return d2 * v * v + d1 * acc <= amax && d3 * v * v * v + 3.0 * d2 * v * acc + d1 * j <= jmax;
+    };
+    if (!fits(v_top - reach, a)) return false;
+    const double rate = std::sqrt(2.0 * j * reach);  // = a
+    for (int k = 0; k < intervals; ++k) {
+        const double lo = reach * k * k / (intervals * intervals);
+        const double hi_root = static_cast<double>(k + 1) / intervals;
+        if (!fits(v_top - lo, rate * hi_root)) return false;
+    }
+    return true;
+}
+
 //! A jerk-limited piece's speed limit with path acceleration a and jerk j kept: the feed, each
-//! axis's speed, d2·v² + d1·a <= amax and d3·v³ + 3·d2·v·a + d1·j <= jmax.
+//! axis's speed, d2·v² + d1·a <= amax and d3·v³ + 3·d2·v·a + d1·j <= jmax, raised where the
+//! S-curve's knee allows it (knee_fits).
 double jerk_limited_speed(const DerivativeBounds& b, const MachineConfig& machine, double feed_mm_s, double a,
                           double j) {
     double v = feed_mm_s / b.speed_factor;
     for (const AxisConfig& axis : machine.axes) {
         const std::size_t i = index(axis.axis);
         if (b.d1[i] > 0) v = std::min(v, axis.max_velocity / b.d1[i]);
-        if (b.d2[i] > 0) v = std::min(v, std::sqrt(std::max(0.0, axis.max_acceleration - b.d1[i] * a) / b.d2[i]));
-        if (b.d2[i] > 0 || b.d3[i] > 0) {
-            v = std::min(v, cubic_speed(b.d3[i], 3.0 * b.d2[i] * a, axis.max_jerk - b.d1[i] * j));
+    }
+    for (const AxisConfig& axis : machine.axes) {
+        const std::size_t i = index(axis.axis);
+        if (!(b.d2[i] > 0 || b.d3[i] > 0)) continue;
+        const double amax = axis.max_acceleration;
+        const double jmax = axis.max_jerk;
+        double lo = b.d2[i] > 0 ? std::sqrt(std::max(0.0, amax - b.d1[i] * a) / b.d2[i]) : inf;
+        lo = std::min(lo, cubic_speed(b.d3[i], 3.0 * b.d2[i] * a, jmax - b.d1[i] * j));
+        if (!(lo < v)) continue;
+        if (!(j > 0) || !std::isfinite(j)) {
+            v = lo;
+            continue;
         }
+        // With no acceleration at the top speed: d2·v² <= amax, d3·v³ + d1·j <= jmax.
+        double hi = b.d2[i] > 0 ? std::sqrt(amax / b.d2[i]) : inf;
+        hi = std::min({hi, cubic_speed(b.d3[i], 0.0, jmax - b.d1[i] * j), v});
+        for (int k = 0; k < 24 && hi > lo * (1.0 + 1e-6); ++k) {
+            const double mid = 0.5 * (lo + hi);
+            (knee_fits(b.d1[i], b.d2[i], b.d3[i], mid, a, j, amax, jmax) ? lo : hi) = mid;
+        }
+        v = std::min(v, lo);
     }
     return std::isfinite(v) ? v : 0.0;
+}
+
+//! A jerk-limited piece's curved axes and its speed with no path acceleration or jerk; no check
+//! (cruise_velocity 0) when more than three axes curve.
+PieceCheck piece_check(const DerivativeBounds& b, const MachineConfig& machine, double feed_mm_s) {
+    PieceCheck check;
+    double v = feed_mm_s / b.speed_factor;
+    for (const AxisConfig& axis : machine.axes) {
+        const std::size_t i = index(axis.axis);
+        if (b.d1[i] > 0) v = std::min(v, axis.max_velocity / b.d1[i]);
+        if (!(b.d2[i] > 0 || b.d3[i] > 0)) continue;
+        if (check.count == static_cast<int>(check.axes.size())) return PieceCheck{};
+        check.axes[static_cast<std::size_t>(check.count++)] = {b.d1[i], b.d2[i], b.d3[i], axis.max_acceleration,
+                                                               axis.max_jerk};
+        if (b.d2[i] > 0) v = std::min(v, std::sqrt(axis.max_acceleration / b.d2[i]));
+        if (b.d3[i] > 0) v = std::min(v, std::cbrt(axis.max_jerk / b.d3[i]));
+    }
+    check.cruise_velocity = std::isfinite(v) ? v * (1.0 - 1e-9) : 0.0;
+    return check;
 }
 
 bool curvature_matters(const PathSegment& arc, const MachineConfig& machine, double feed_mm_s) {
@@ -134,6 +194,7 @@ bool split_arc(const PathSegment& arc, const MachineConfig& machine, double feed
         const double start = k * piece_length;
         piece.path = trim_start(arc, start);
         piece.path.length = k + 1 == n ? arc.length - start : piece_length;
+        piece.check = PieceCheck{};
         PieceBounds& p = pieces[static_cast<std::size_t>(k)];
         p.b = derivative_bounds(piece.path);
         p.length = piece.path.length;
@@ -209,6 +270,7 @@ bool split_jerk_limited(const PathSegment& segment, int n, const MachineConfig& 
         piece.limits.max_velocity = jerk_limited_speed(b, machine, feed_mm_s, a, j);
         piece.limits.max_acceleration = a;
         piece.limits.max_jerk = j;
+        piece.check = piece_check(b, machine, feed_mm_s);
         fastest = std::max(fastest, piece.limits.max_velocity);
     }
     // Pieces slower than the whole segment everywhere (a short arc, a tight jerk budget): keep

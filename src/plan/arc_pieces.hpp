@@ -4,6 +4,7 @@
 // an arc").
 #include <vector>
 
+#include "cruise_raise.hpp"
 #include "nckit/core/machine.hpp"
 #include "nckit/plan/path_segment.hpp"
 #include "nckit/plan/profile.hpp"
@@ -15,6 +16,7 @@ namespace nckit::plan_detail {
 struct ArcPiece {
     PathSegment path;
     ProfileLimits limits;
+    PieceCheck check;  //!< jerk-limited pieces: what the raise of a run may use (cruise_raise.hpp)
 };
 
 //! Pieces of a full turn: 256, i.e. about 1.4° each (the speed limit varies by at most about
@@ -35,7 +37,7 @@ inline constexpr int max_arc_pieces = 1024;
 //! same on all pieces of an arc): shares of each axis's limits, chosen by measurement on the
 //! planner benchmark programs (docs/planner.md, "Speed along an arc (S-curve)").
 inline constexpr double jerk_limited_acceleration_share = 0.3;
-inline constexpr double jerk_limited_jerk_share = 0.5;
+inline constexpr double jerk_limited_jerk_share = 0.4;
 //! At most this share of an axis's jerk goes to the coupling term 3·d2·v·a.
 inline constexpr double jerk_limited_coupling_share = 0.6;
 
@@ -49,7 +51,7 @@ inline constexpr double jerk_limited_coupling_share = 0.6;
                                           std::vector<ArcPiece>& out);
 
 //! Pieces a jerk-limited transition next to an arc is cut into (split_transition_jerk_limited).
-inline constexpr int transition_pieces = 16;
+inline constexpr int transition_pieces = 32;
 
 //! S-curve plans only. Cuts a quintic transition (make_transition) into transition_pieces pieces
 //! with limits of their own, by the same rule as split_arc_jerk_limited: where it joins arcs

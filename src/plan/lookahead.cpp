@@ -107,6 +107,7 @@ void Lookahead::add(WindowSegment segment) {
         ++run.count;
         run.length += segment.path.length;
         run.junction_max = std::min(segment.junction_max, run.limits.max_velocity);
+        run.cruise_velocity = std::min(run.cruise_velocity, segment.check.cruise_velocity);
         run.stop_speed = -1;
         touch(runs_.size() - 1);
     } else {
@@ -116,6 +117,7 @@ void Lookahead::add(WindowSegment segment) {
         run.limits = {segment.limits.max_velocity * run_margin, segment.limits.max_acceleration * run_margin,
                       segment.limits.max_jerk * run_margin};
         run.first_limits = run.limits;
+        run.cruise_velocity = segment.check.cruise_velocity;
         run.junction_max = std::min(segment.junction_max, run.limits.max_velocity);
         runs_.push_back(run);
         touch(runs_.size() - 1);
@@ -216,7 +218,13 @@ void Lookahead::commit_front(double v_end) {
     const WindowRun run = runs_.front();
     runs_.pop_front();
     if (dirty_from_ > 0) --dirty_from_;
-    const Profile profile = plan_profile(run.length, start_speed_, v_end, run.limits, kind_);
+    Profile profile = plan_profile(run.length, start_speed_, v_end, run.limits, kind_);
+    // A run of curved pieces may go faster where its profile keeps them (cruise_raise.hpp).
+    if (kind_ == ProfileKind::scurve && run.cruise_velocity > run.limits.max_velocity * (1.0 + 1e-4)) {
+        spans_.clear();
+        for (std::size_t i = 0; i < run.count; ++i) spans_.push_back({segments_[i].path.length, &segments_[i].check});
+        profile = raised_profile(profile, run.length, run.limits, run.cruise_velocity, spans_);
+    }
     const double total_s = profile.duration_s();
     start_speed_ = profile.end_velocity;
     ProfileWalker walker(profile);

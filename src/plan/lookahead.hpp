@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "cruise_raise.hpp"
 #include "nckit/plan/spindle_model.hpp"
 #include "nckit/plan/trajectory.hpp"
 
@@ -77,6 +78,9 @@ struct WindowSegment {
     bool blend = false;
     bool continues_move = false;     //!< TrajectoryPiece::continues_move
     std::vector<WindowEvent> after;  //!< events between its end and the next segment
+    //! A curved piece's axes, so a run of such pieces may go faster where its profile holds the
+    //! speed (cruise_raise.hpp); cruise_velocity 0 when unknown.
+    PieceCheck check;
 };
 
 //! Consecutive segments joined at speed with limits within run_spread of each other share one
@@ -90,7 +94,9 @@ struct WindowRun {
     ProfileLimits limits;
     ProfileLimits first_limits;  //!< its first segment's (times run_margin); limits never drift far below
     double junction_max = 0;     //!< mm/s at its end
-    double bound = 0;            //!< mm/s, from the backward pass: the end speed it can still stop from
+    //! mm/s, the lowest cruise_velocity of its segments when every one has a PieceCheck, else 0.
+    double cruise_velocity = 0;
+    double bound = 0;  //!< mm/s, from the backward pass: the end speed it can still stop from
     //! The bound no longer depends on the window's provisional stop at its end (see plan()).
     bool bound_final = false;
     //! mm/s, max_end_speed(length, 0, limits) once computed, < 0 until then; reset whenever
@@ -142,6 +148,7 @@ private:
 
     ProfileKind kind_;
     std::size_t window_;
+    std::vector<CheckedSpan> spans_;  //!< commit_front's, reused
     RingQueue<WindowSegment> segments_;
     RingQueue<WindowRun> runs_;
     RingQueue<TrajectoryPiece> output_;

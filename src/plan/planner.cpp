@@ -9,11 +9,12 @@
 #include <stdexcept>
 #include <utility>
 
-#include "arc_pieces.hpp"
 #include "chain_smoother.hpp"
 #include "junction.hpp"
 #include "lookahead.hpp"
+#include "pending_motion.hpp"
 #include "transition.hpp"
+#include "window_feed.hpp"
 #include "nckit/plan/segment_limits.hpp"
 
 namespace nckit {
@@ -29,82 +30,31 @@ constexpr double min_trimmed_length = 1e-12;
 }  // namespace
 
 struct Planner::Impl {
-    //! The last motion, whose end may still be trimmed by a blend with the next one.
-    struct Pending {
-        PathSegment path;
-        double full_length = 0;  //!< programmed length, for the half-line rule
-        //! Computed when first needed: a short line of a CAM chain is usually eaten whole by the
-        //! transitions at its ends, and then its own limits never matter.
-        std::optional<ProfileLimits> limits;
-        double normal_share = 0.5;  //!< of the acceleration, for the curvature term
-        double feed_mm_s = 0;       //!< +inf for rapids
-        bool blendable = false;     //!< a G1 line or a G2/G3 arc: its ends may be rounded
-        PathControl control;
-        SourceLocation where;
-        std::int64_t sequence_number = -1;
-        //! The transition into this motion, held back until the next join is known: when that
-        //! join's transition eats the whole of this motion, both meet with a common curvature.
-        std::optional<plan_detail::Transition> entry;
-        double entry_feed_mm_s = 0;
-        SourceLocation entry_where;
-        std::int64_t entry_number = -1;
-    };
+    using Pending = plan_detail::PendingMotion;
 
     MachineConfig machine;
     PlannerOptions options;
     ProfileKind kind;
     plan_detail::Lookahead lookahead;
+    plan_detail::WindowFeed window_feed;  //!< where segments enter the lookahead; knows where the path ends
     //! Two slots the pending motion and the next one alternate in: a Pending holds a whole
     //! transition (about 2 kB), which moving from a local into an optional cost on every move.
     std::array<Pending, 2> slots;
     Pending* pending = nullptr;  //!< one of slots, or none
     std::vector<WindowEvent> pending_events;
-    AxisVector position;                      //!< where the path added so far ends
     bool have_position = false;               //!< a motion has told where the machine is
     std::vector<WindowEvent> leading_events;  //!< events before the first motion: place unknown
     Diagnostics diagnostics;
-    SpindleCommand spindle;                         //!< the spindle as the moves pushed so far leave it
-    bool last_motion_sync = false;                  //!< the last motion was G32/G33: a thread goes on at speed
-    bool at_rest = true;                            //!< the last segment added to the window ends with a stop
-    std::vector<plan_detail::ArcPiece> arc_pieces;  //!< reused by release_pending
-    plan_detail::ChainSmoother chains;              //!< S-curve: CAM polylines smoothed within G64 P
+    SpindleCommand spindle;             //!< the spindle as the moves pushed so far leave it
+    bool last_motion_sync = false;      //!< the last motion was G32/G33: a thread goes on at speed
+    plan_detail::ChainSmoother chains;  //!< S-curve: CAM polylines smoothed within G64 P
 
     Impl(MachineConfig m, PlannerOptions o)
         : machine(std::move(m)),
           options(o),
           kind(o.profile.value_or(machine.profile)),
-          lookahead(kind, o.window_moves, machine.spindle) {}
-
-    void add_segment(PathSegment path, const ProfileLimits& limits, double junction_max, const SourceLocation& where,
-                     std::int64_t sequence_number, bool blend, std::vector<WindowEvent> after,
-                     bool continues_move = false) {
-        position = end_point(path);
-        at_rest = !(junction_max > 0);
-        WindowSegment s;
-        s.path = std::move(path);
-        s.limits = limits;
-        s.junction_max = junction_max;
-        s.where = where;
-        s.sequence_number = sequence_number;
-        s.blend = blend;
-        s.continues_move = continues_move;
-        s.after = std::move(after);
-        lookahead.add(std::move(s));
-    }
-
-    //! A jerk-limited transition next to an arc, in pieces (the later ones continue it); false
-    //! when it is better left whole. Out of line: chains of lines never come here.
-    [[gnu::noinline]] bool add_transition_pieces(Pending& p) {
-        if (!plan_detail::split_transition_jerk_limited(p.entry->curve, machine, p.entry_feed_mm_s, arc_pieces)) {
-            return false;
-        }
-        for (std::size_t k = 0; k < arc_pieces.size(); ++k) {
-            plan_detail::ArcPiece& piece = arc_pieces[k];
-            add_segment(std::move(piece.path), piece.limits, piece.limits.max_velocity, p.entry_where, p.entry_number,
-                        true, {}, k > 0);
-        }
-        return true;
-    }
+          lookahead(kind, o.window_moves, machine.spindle),
+          window_feed(machine, kind, lookahead) {}
 
     //! The pending motion goes to the window, ending at rest when `stop`, else at most at its own
     //! speed limit (the next segment's lowers it further). An arc whose curvature sets its speed
@@ -113,35 +63,14 @@ struct Planner::Impl {
         if (!pending) return;
         Pending& p = *pending;
         if (p.entry) {
-            // Under a jerk limit a transition that joins an arc is cut into pieces whose speed
-            // follows its curvature (arc_pieces.hpp); transitions between lines stay whole.
-            const bool next_to_arc = p.entry->replaced_before.shape == SegmentShape::arc ||
-                                     p.entry->replaced_after.shape == SegmentShape::arc;
-            if (!(kind == ProfileKind::scurve && next_to_arc && add_transition_pieces(p))) {
-                const ProfileLimits limits =
-                    segment_limits(p.entry->curve, machine, p.entry_feed_mm_s, kind,
-                                   kind == ProfileKind::trapezoid ? trapezoid_blend_normal_share : 0.5);
-                add_segment(std::move(p.entry->curve), limits, limits.max_velocity, p.entry_where, p.entry_number, true,
-                            {});
-            }
+            window_feed.add_transition(*p.entry, p.entry_feed_mm_s, {p.entry_where, p.entry_number});
             p.entry.reset();
         }
         if (!(p.path.length > min_trimmed_length)) {
-            for (WindowEvent& e : pending_events) lookahead.add_event(std::move(e), position);
-        } else if (kind == ProfileKind::trapezoid
-                       ? plan_detail::split_arc(p.path, machine, p.feed_mm_s, at_rest, stop, arc_pieces)
-                       : plan_detail::split_arc_jerk_limited(p.path, machine, p.feed_mm_s, arc_pieces)) {
-            for (std::size_t k = 0; k < arc_pieces.size(); ++k) {
-                const bool last = k + 1 == arc_pieces.size();
-                const ProfileLimits& limits = arc_pieces[k].limits;
-                add_segment(std::move(arc_pieces[k].path), limits, last && stop ? 0.0 : limits.max_velocity, p.where,
-                            p.sequence_number, false, last ? std::move(pending_events) : std::vector<WindowEvent>{},
-                            k > 0);
-            }
+            for (WindowEvent& e : pending_events) lookahead.add_event(std::move(e), window_feed.position);
         } else {
-            const ProfileLimits limits = limits_of(p);
-            add_segment(std::move(p.path), limits, stop ? 0.0 : limits.max_velocity, p.where, p.sequence_number, false,
-                        std::move(pending_events));
+            window_feed.add_motion(std::move(p.path), p.feed_mm_s, stop, {p.where, p.sequence_number},
+                                   std::move(pending_events), p.limits, p.normal_share);
         }
         pending_events.clear();
         pending = nullptr;
@@ -203,45 +132,10 @@ struct Planner::Impl {
     }
 
     //! Any other corner, and every join with a jump in curvature under a jerk limit: a quintic
-    //! transition within the tolerance. Each side gives at most half its programmed length.
+    //! transition within the tolerance (pending_motion.hpp).
     bool transition(Pending& p, Pending& next, double tolerance) {
-        // Built in place: a transition is a large value, and this runs once per move of a chain.
-        auto xyz = [](const AxisVector& v) { return std::array<double, 3>{v[0], v[1], v[2]}; };
-        plan_detail::ChainStart chain;
-        if (p.entry) {
-            chain.entry_length = p.entry->curve.length;
-            chain.entry_start_d1 = xyz(p.entry->start.d1);
-        }
-        const double before_room = 0.5 * p.full_length;
-        const double after_room = 0.5 * next.path.length;
-        auto& t = next.entry.emplace();
-        if (!plan_detail::make_transition(p.path, before_room, next.path, after_room, tolerance, t,
-                                          p.entry ? &chain : nullptr)) {
-            next.entry.reset();
-            return false;
-        }
-        if (t.chained) {
-            // p is eaten by its two transitions: they meet at its middle, in its direction, with
-            // the curvature of the turn between their outer ends (transition.hpp). The one into p
-            // is rebuilt to end there; failing the tolerance, both stay as built (no curvature).
-            const auto entry = plan_detail::with_end_states(*p.entry, xyz(p.entry->start.d1), xyz(p.entry->start.d2),
-                                                            xyz(t.start.d1), xyz(t.start.d2), tolerance);
-            if (entry) {
-                plan_detail::apply(*p.entry, *entry);
-            } else if (!plan_detail::make_transition(p.path, before_room, next.path, after_room, tolerance, t)) {
-                next.entry.reset();
-                return false;
-            }
-        }
-        p.path.length -= t.trim_before;
-        const SourceLocation where = p.where;
-        const std::int64_t number = p.sequence_number;
-        const double feed = std::min(p.feed_mm_s, next.feed_mm_s);
+        if (!plan_detail::join_by_transition(p, next, tolerance)) return false;
         release_pending(false);
-        next.path = trim_start(next.path, t.trim_after);
-        next.entry_feed_mm_s = feed;
-        next.entry_where = where;
-        next.entry_number = number;
         return true;
     }
 
@@ -253,13 +147,8 @@ struct Planner::Impl {
         const SourceLocation where = p.where;
         const std::int64_t number = p.sequence_number;
         release_pending(false);
-        add_segment(curve, limits, limits.max_velocity, where, number, true, {});
+        window_feed.add_segment(curve, limits, limits.max_velocity, {where, number}, true, {});
         next.path = trim_start(next.path, trim_after);
-    }
-
-    [[nodiscard]] ProfileLimits limits_of(Pending& p) const {
-        if (!p.limits) p.limits = segment_limits(p.path, machine, p.feed_mm_s, kind, p.normal_share);
-        return *p.limits;
     }
 
     bool check_axes(const PathSegment& path, const SourceLocation& where) {
@@ -305,10 +194,10 @@ struct Planner::Impl {
     //! The machine is at `from` (the start of a motion).
     void locate(const AxisVector& from) {
         if (pending) return;
-        position = from;
+        window_feed.position = from;
         if (!have_position) {
             have_position = true;
-            for (WindowEvent& e : leading_events) lookahead.add_event(std::move(e), position);
+            for (WindowEvent& e : leading_events) lookahead.add_event(std::move(e), window_feed.position);
             leading_events.clear();
         }
     }
@@ -320,7 +209,7 @@ struct Planner::Impl {
         } else if (pending) {
             pending_events.push_back(std::move(e));
         } else {
-            lookahead.add_event(std::move(e), position);
+            lookahead.add_event(std::move(e), window_feed.position);
         }
     }
 
@@ -415,7 +304,7 @@ struct Planner::Impl {
         chains.flush();
         drain_chains();
         release_pending(true);
-        locate(position);  // events of a program without motion: at the origin
+        locate(window_feed.position);  // events of a program without motion: at the origin
         lookahead.finish();
     }
 

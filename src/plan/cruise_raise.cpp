@@ -1,0 +1,114 @@
+#include "cruise_raise.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "profile_inverse.hpp"
+
+namespace nckit::plan_detail {
+
+namespace {
+
+//! Bisection steps between the pieces' limit and their cruise speed.
+constexpr int raise_steps = 6;
+
+//! The state of constant-jerk motion after x seconds from (v, a) with jerk j.
+struct Motion {
+    double v;
+    double a;
+};
+Motion advance(double v, double a, double j, double x) {
+    return {v + x * (a + 0.5 * x * j), a + x * j};
+}
+
+bool part_fits(const PieceCheck& check, double v, double a, double j) {
+    if (v > check.cruise_velocity) return false;
+    for (int k = 0; k < check.count; ++k) {
+        const CurvedAxis& c = check.axes[static_cast<std::size_t>(k)];
+        if (c.d2 * v * v + c.d1 * a > c.max_acceleration) return false;
+        if (c.d3 * v * v * v + 3.0 * c.d2 * v * a + c.d1 * j > c.max_jerk) return false;
+    }
+    return true;
+}
+
+//! Whether the motion of one phase from time x0 to x1 after its start (state v, a, jerk j at
+//! the phase start) keeps the check, in two halves.
+bool phase_part_fits(const PieceCheck& check, double v, double a, double j, double x0, double x1) {
+    const double mid = 0.5 * (x0 + x1);
+    const double cuts[3] = {x0, mid, x1};
+    for (int h = 0; h < 2; ++h) {
+        const Motion s = advance(v, a, j, cuts[h]);
+        const Motion e = advance(v, a, j, cuts[h + 1]);
+        double v_top = std::max(s.v, e.v);
+        // The speed peaks inside where the acceleration passes through 0.
+        if (j != 0) {
+            const double x_zero = -a / j;
+            if (x_zero > cuts[h] && x_zero < cuts[h + 1]) v_top = std::max(v_top, advance(v, a, j, x_zero).v);
+        }
+        const double a_top = std::max(std::abs(s.a), std::abs(e.a));
+        if (!part_fits(check, v_top, a_top, std::abs(j))) return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+bool profile_keeps_pieces(const Profile& profile, const std::vector<CheckedSpan>& spans) {
+    ProfileWalker walker(profile);
+    double offset_mm = 0;
+    double t0 = 0;
+    // The phase the span starts in, and the state at its start.
+    int phase = 0;
+    double phase_start_s = 0;
+    double v = profile.start_velocity;
+    double a = 0;
+    const double total_s = profile.duration_s();
+    for (std::size_t n = 0; n < spans.size(); ++n) {
+        const CheckedSpan& span = spans[n];
+        offset_mm += span.length;
+        const double t1 =
+            n + 1 == spans.size() ? total_s : std::max(t0, walker.time_at(profile.start_position + offset_mm));
+        while (phase < profile.phase_count) {
+            const ProfilePhase& ph = profile.phases[static_cast<std::size_t>(phase)];
+            a = ph.acceleration;
+            const double phase_end_s = phase_start_s + ph.duration_s;
+            const double x0 = std::max(0.0, t0 - phase_start_s);
+            const double x1 = std::min(ph.duration_s, t1 - phase_start_s);
+            if (x1 >= x0 && !phase_part_fits(*span.check, v, a, ph.jerk, x0, x1)) return false;
+            if (t1 < phase_end_s || phase + 1 == profile.phase_count) break;
+            v = advance(v, a, ph.jerk, ph.duration_s).v;
+            phase_start_s = phase_end_s;
+            ++phase;
+        }
+        t0 = t1;
+    }
+    return true;
+}
+
+Profile raised_profile(const Profile& planned, double distance, const ProfileLimits& limits, double cruise_velocity,
+                       const std::vector<CheckedSpan>& spans) {
+    Profile best = planned;
+    double lo = limits.max_velocity;
+    double hi = cruise_velocity;
+    for (int k = 0; k < raise_steps && hi > lo * (1.0 + 1e-4); ++k) {
+        // The top first: a run whose profile holds its speed on the tight pieces takes it at once.
+        const double top = k == 0 ? hi : 0.5 * (lo + hi);
+        ProfileLimits raised = limits;
+        raised.max_velocity = top;
+        const Profile candidate =
+            plan_profile(distance, planned.start_velocity, planned.end_velocity, raised, ProfileKind::scurve);
+        // The passes chose the end speeds with the pieces' limits: a candidate must keep them.
+        const bool same_ends =
+            candidate.start_velocity == planned.start_velocity && candidate.end_velocity == planned.end_velocity;
+        if (same_ends && profile_keeps_pieces(candidate, spans)) {
+            if (candidate.duration_s() < best.duration_s()) best = candidate;
+            if (k == 0) break;
+            lo = top;
+        } else {
+            hi = top;
+        }
+    }
+    return best;
+}
+
+}  // namespace nckit::plan_detail

@@ -1,0 +1,51 @@
+#pragma once
+// A run of curved pieces planned faster than the pieces' own speed limits where the profile
+// really keeps their axes within limits: a piece's speed limit pays for the path acceleration
+// it might see, but where the run's profile holds its speed there, the turning may take the
+// whole acceleration (docs/planner.md, "Speed along an arc (S-curve)").
+#include <array>
+#include <vector>
+
+#include "nckit/plan/profile.hpp"
+
+namespace nckit::plan_detail {
+
+//! One axis of a curved piece: bounds of |q'|, |q''|, |q'''| over the piece and the axis's
+//! acceleration and jerk limits.
+struct CurvedAxis {
+    double d1 = 0;
+    double d2 = 0;
+    double d3 = 0;
+    double max_acceleration = 0;  //!< mm/s²
+    double max_jerk = 0;          //!< mm/s³
+};
+
+//! What a piece allows beyond its rectangular (v, a, j) limits: its curved axes (count 0: none
+//! known, the piece is held to its limits) and the speed it allows with no path acceleration or
+//! jerk (d2·v² <= amax, d3·v³ <= jmax, the feed and the axes' speeds).
+struct PieceCheck {
+    std::array<CurvedAxis, 3> axes{};
+    int count = 0;
+    double cruise_velocity = 0;  //!< mm/s
+};
+
+//! One piece of a run as the check sees it: its length along the run and its check.
+struct CheckedSpan {
+    double length = 0;  //!< mm
+    const PieceCheck* check = nullptr;
+};
+
+//! Whether `profile` keeps every axis of every span within its limits: each span's time in the
+//! profile is cut at phase boundaries and halved, and on each part the highest speed, |s̈| and
+//! |s⃛| there must satisfy d2·v² + d1·|s̈| <= amax and d3·v³ + 3·d2·v·|s̈| + d1·|s⃛| <= jmax on
+//! every curved axis, and v <= cruise_velocity (bounds taken together, so the test errs on the
+//! safe side).
+[[nodiscard]] bool profile_keeps_pieces(const Profile& profile, const std::vector<CheckedSpan>& spans);
+
+//! The fastest profile over `distance` from v_start to v_end with the acceleration and jerk of
+//! `limits` and a top speed between limits.max_velocity and `cruise_velocity` that
+//! profile_keeps_pieces accepts; `planned` (with limits.max_velocity) when none is faster.
+[[nodiscard]] Profile raised_profile(const Profile& planned, double distance, const ProfileLimits& limits,
+                                     double cruise_velocity, const std::vector<CheckedSpan>& spans);
+
+}  // namespace nckit::plan_detail

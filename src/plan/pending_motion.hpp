@@ -1,0 +1,43 @@
+#pragma once
+// The motion the planner holds back until the next one is known (its end may still be trimmed
+// by a blend), and the join of two such motions by a quintic transition.
+#include <cstdint>
+#include <optional>
+
+#include "transition.hpp"
+#include "nckit/core/source_location.hpp"
+#include "nckit/interp/move.hpp"
+#include "nckit/plan/path_segment.hpp"
+#include "nckit/plan/profile.hpp"
+
+namespace nckit::plan_detail {
+
+//! The last motion, whose end may still be trimmed by a blend with the next one.
+struct PendingMotion {
+    PathSegment path;
+    double full_length = 0;  //!< programmed length, for the half-line rule
+    //! Computed when first needed: a short line of a CAM chain is usually eaten whole by the
+    //! transitions at its ends, and then its own limits never matter.
+    std::optional<ProfileLimits> limits;
+    double normal_share = 0.5;  //!< of the acceleration, for the curvature term
+    double feed_mm_s = 0;       //!< +inf for rapids
+    bool blendable = false;     //!< a G1 line or a G2/G3 arc: its ends may be rounded
+    PathControl control;
+    SourceLocation where;
+    std::int64_t sequence_number = -1;
+    //! The transition into this motion, held back until the next join is known: when that
+    //! join's transition eats the whole of this motion, both meet with a common curvature.
+    std::optional<Transition> entry;
+    double entry_feed_mm_s = 0;
+    SourceLocation entry_where;
+    std::int64_t entry_number = -1;
+};
+
+//! Joins `p` (the pending motion) and `next` by a quintic transition within `tolerance`, each
+//! side giving at most half its programmed length: on success p's end and next's start are
+//! trimmed and the transition becomes next.entry (fed at the lower of the two feeds, located at
+//! p); p is then ready to be released. False, with both untouched, when no transition keeps the
+//! tolerance.
+[[nodiscard]] bool join_by_transition(PendingMotion& p, PendingMotion& next, double tolerance);
+
+}  // namespace nckit::plan_detail

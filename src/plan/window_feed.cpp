@@ -1,0 +1,69 @@
+#include "window_feed.hpp"
+
+#include <utility>
+
+#include "nckit/plan/segment_limits.hpp"
+
+namespace nckit::plan_detail {
+
+void WindowFeed::add_segment(PathSegment path, const ProfileLimits& limits, double junction_max,
+                             const SegmentOrigin& origin, bool blend, std::vector<WindowEvent> after,
+                             bool continues_move, const PieceCheck& check) {
+    position = end_point(path);
+    at_rest_ = !(junction_max > 0);
+    WindowSegment s;
+    s.path = std::move(path);
+    s.limits = limits;
+    s.junction_max = junction_max;
+    s.where = origin.where;
+    s.sequence_number = origin.sequence_number;
+    s.blend = blend;
+    s.continues_move = continues_move;
+    s.check = check;
+    s.after = std::move(after);
+    lookahead_.add(std::move(s));
+}
+
+bool WindowFeed::add_transition_pieces(Transition& transition, double feed_mm_s, const SegmentOrigin& origin) {
+    if (!split_transition_jerk_limited(transition.curve, machine_, feed_mm_s, pieces_)) return false;
+    for (std::size_t k = 0; k < pieces_.size(); ++k) {
+        ArcPiece& piece = pieces_[k];
+        // The pieces after the first continue one corner (the tool-path report counts it once).
+        add_segment(std::move(piece.path), piece.limits, piece.limits.max_velocity, origin, true, {}, k > 0,
+                    piece.check);
+    }
+    return true;
+}
+
+void WindowFeed::add_transition(Transition& transition, double feed_mm_s, const SegmentOrigin& origin) {
+    // Under a jerk limit a transition that joins an arc is cut into pieces whose speed follows
+    // its curvature; transitions between lines stay whole (a CAM chain would pay the pieces at
+    // every vertex).
+    const bool next_to_arc =
+        transition.replaced_before.shape == SegmentShape::arc || transition.replaced_after.shape == SegmentShape::arc;
+    if (kind_ == ProfileKind::scurve && next_to_arc && add_transition_pieces(transition, feed_mm_s, origin)) return;
+    const ProfileLimits limits = segment_limits(transition.curve, machine_, feed_mm_s, kind_,
+                                                kind_ == ProfileKind::trapezoid ? trapezoid_blend_normal_share : 0.5);
+    add_segment(std::move(transition.curve), limits, limits.max_velocity, origin, true, {});
+}
+
+void WindowFeed::add_motion(PathSegment path, double feed_mm_s, bool stop, const SegmentOrigin& origin,
+                            std::vector<WindowEvent> after, std::optional<ProfileLimits>& limits, double normal_share) {
+    const bool in_pieces = kind_ == ProfileKind::trapezoid
+                               ? split_arc(path, machine_, feed_mm_s, at_rest_, stop, pieces_)
+                               : split_arc_jerk_limited(path, machine_, feed_mm_s, pieces_);
+    if (in_pieces) {
+        for (std::size_t k = 0; k < pieces_.size(); ++k) {
+            const bool last = k + 1 == pieces_.size();
+            const ProfileLimits& piece_limits = pieces_[k].limits;
+            add_segment(std::move(pieces_[k].path), piece_limits, last && stop ? 0.0 : piece_limits.max_velocity,
+                        origin, false, last ? std::move(after) : std::vector<WindowEvent>{}, k > 0, pieces_[k].check);
+        }
+        return;
+    }
+    if (!limits) limits = segment_limits(path, machine_, feed_mm_s, kind_, normal_share);
+    const ProfileLimits whole = *limits;
+    add_segment(std::move(path), whole, stop ? 0.0 : whole.max_velocity, origin, false, std::move(after));
+}
+
+}  // namespace nckit::plan_detail
