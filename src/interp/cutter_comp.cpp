@@ -134,7 +134,10 @@ std::optional<CompError> CutterCompensator::start_up(Move move, std::vector<Move
     Vec2 from = in_plane(line.from, p);
     Vec2 to = in_plane(line.to, p);
     double distance = nckit::length(to - from);
-    if (distance <= radius_mm_) {
+    // LinuxCNC refuses a start-up move not longer than r, but compares against a radius that
+    // has been through its units' round trip: a move exactly r long (to rounding) runs there.
+    const bool too_short = linuxcnc_ ? distance < radius_mm_ - 1e-9 : distance <= radius_mm_;
+    if (too_short) {
         return error(move.where, "cutter-comp",
                      fmt::format("the start-up move is {:.4f} mm long in the plane, not longer than the tool "
                                  "radius {:.4f} mm",

@@ -188,6 +188,7 @@ std::optional<InterpResult> NgcRunner::run_ordinary(std::vector<Move>& pending) 
         }
     }
     if (g7x_word() != nullptr) return run_g7x(pending);
+    if (take_spline_block()) return run_spline(pending);
     if (auto error = read_inverse_time()) return InterpResult(std::move(*error));
     if (auto error = translate_g92_kept()) return InterpResult(std::move(*error));
     if (auto error = translate_block()) return InterpResult(std::move(*error));
