@@ -93,11 +93,14 @@ std::optional<CompError> CutterCompensator::add(Move move, std::vector<Move>& ou
             out.push_back(std::move(move));
             return std::nullopt;
         case Mode::waiting:
+            if (is_arc && linuxcnc_) return start_up_on_arc(std::move(move));
             if (is_arc) {
                 return error(move.where, "cutter-comp",
                              "cutter compensation cannot start on an arc: start it with a G0/G1 move in the plane");
             }
-            if (is_line && moves_in_plane(move)) return start_up(std::move(move), out);
+            // LinuxCNC takes the first straight move after G41/G42 as the start-up move even
+            // when it does not move in the plane (a Z plunge): too short, an error there.
+            if (is_line && (moves_in_plane(move) || linuxcnc_)) return start_up(std::move(move), out);
             if (leave_from_tool_) {
                 if (auto* line = std::get_if<Line>(&move.what)) {
                     line->from = tool_;

@@ -76,6 +76,8 @@ private:
     };
 
     std::optional<CompError> start_up(Move move, std::vector<Move>& out);
+    //! LinuxCNC's start-up on an arc (cutter_comp_arc_entry.cpp).
+    std::optional<CompError> start_up_on_arc(Move move);
     std::optional<CompError> next_planar(Move move, std::vector<Move>& out);
     //! next_planar() for the first planar move after change_offset() (cutter_comp_change.cpp).
     std::optional<CompError> next_with_new_offset(Move move, std::vector<Move>& out);
