@@ -35,8 +35,9 @@ std::optional<CompError> CutterCompensator::start_up_on_arc(Move move) {
     const double to_center = std::atan2(center.y - new_end.y, center.x - new_end.x);
     const double corner = std::atan2(from.y - new_end.y, from.x - new_end.x) - to_center;
     if (std::abs(std::cos(corner)) < 1e-6) {
-        return error(move.where, "cutter-gouge",
-                     fmt::format("the tool radius {:.4f} mm is not less than the radius of this start-up arc", radius_mm_));
+        return error(
+            move.where, "cutter-gouge",
+            fmt::format("the tool radius {:.4f} mm is not less than the radius of this start-up arc", radius_mm_));
     }
     const double reach = half_chord / std::cos(corner);
     const Vec2 new_center = new_end + reach * Vec2{std::cos(to_center), std::sin(to_center)};

@@ -191,8 +191,8 @@ private:
     bool error_is_recoverable_ = false;
     //! Where the tool stands after a turned tapping feed: the next move starts there.
     std::optional<AxisVector> tool_at_;
-    //! #5061-#5069 after a G38.x probe: its end point, program units, X Y Z A B C U V W.
-    std::optional<std::array<double, 9>> probe_result_;
+    //! The running probe's start as the interpreter knows it (machine mm), for its back-off.
+    std::optional<AxisVector> probe_start_;
     //! While a lathe cycle reads its shape: the shape so far.
     std::optional<ProfileReading> profile_;
     //! LinuxCNC's spline motion: 50 (G5), 51 (G5.1), 52 (G5.2, gathering points), 53 (after
