@@ -60,11 +60,13 @@ TEST(NgcSpline, QuadraticBiarcsMeetTheCurveAndJoinSmoothly) {
     }
 }
 
-TEST(NgcSpline, CubicStaysModalAndGoesOnAlongItsLastEnd) {
-    // G5 with 4 control points: 16 steps, 32 arcs. The second block has axis words only: another
-    // G5 whose I J are the first one's -P -Q, so the curve has no corner at X10 Y0.
-    const auto arcs =
-        only<Arc>(moves_of("G21 G17 G90 F100\nG0 X0 Y0\nG5 X10 Y0 I0 J4 P0 Q-4\nX20 Y0 P0 Q4\nM2\n", linuxcnc_mill()));
+TEST(NgcSpline, CubicGoesOnAlongItsLastEndAndIsNotModal) {
+    // G5 with 4 control points: 16 steps, 32 arcs. The second G5 has no I J: they are the first
+    // one's -P -Q, so the curve has no corner at X10 Y0. G5 is not modal in LinuxCNC: the bare
+    // X30 after it is a G1 (the mode of before), and P Q on such a block are an error there.
+    const auto moves = moves_of("G21 G17 G90 F100\nG0 X0 Y0\nG1 X0\nG5 X10 Y0 I0 J4 P0 Q-4\nG5 X20 Y0 P0 Q4\nX30\nM2\n",
+                                linuxcnc_mill());
+    const auto arcs = only<Arc>(moves);
     ASSERT_EQ(arcs.size(), 64u);
     EXPECT_NEAR(arcs[31].to[Axis::X], 10.0, 1e-9);
     EXPECT_NEAR(arcs[63].to[Axis::X], 20.0, 1e-9);
@@ -72,6 +74,13 @@ TEST(NgcSpline, CubicStaysModalAndGoesOnAlongItsLastEnd) {
     const Point in = arc_direction(arcs[32], false);
     EXPECT_NEAR(out.x * in.x + out.y * in.y, 1.0, 1e-6);
     EXPECT_NEAR(out.y, 1.0, 1e-3);  // up through (10,0): from the control point (10,-4) to (10,4)
+    const auto lines = only<Line>(moves);
+    ASSERT_FALSE(lines.empty());
+    EXPECT_FALSE(lines.back().rapid);
+    EXPECT_NEAR(lines.back().to[Axis::X], 30.0, 1e-12);
+    EXPECT_NEAR(lines.back().from[Axis::X], 20.0, 1e-9);
+    EXPECT_EQ(
+        error_of("G21 G17 F100\nG1 X0\nG5 X10 Y0 I0 J4 P0 Q-4\nX20 Y0 P0 Q4\nM2\n", linuxcnc_mill()).location.line, 4u);
 }
 
 TEST(NgcSpline, NurbsEndsOnItsLastPointAndStaysInItsPlane) {

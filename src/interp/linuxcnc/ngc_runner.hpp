@@ -119,8 +119,8 @@ private:
                                             std::vector<Move>& pending);
 
     // ngc_spline.cpp: G5, G5.1, G5.2/G5.3 as LinuxCNC's biarcs.
-    //! The block is a spline's (names G5.x, or carries its words while G5/G5.1/G5.2 is modal).
-    //! A block with another motion code ends the modal spline.
+    //! The block is a spline's (names G5.x, or carries control point words while G5.2 gathers
+    //! them, or axis words after G5.3). A block with another motion code ends that state.
     bool take_spline_block();
     std::optional<InterpResult> run_spline(std::vector<Move>& pending);
     std::optional<Diagnostic> run_spline_elements(const std::vector<SplineElement>& elements, Plane plane,
@@ -195,8 +195,8 @@ private:
     std::optional<AxisVector> probe_start_;
     //! While a lathe cycle reads its shape: the shape so far.
     std::optional<ProfileReading> profile_;
-    //! LinuxCNC's spline motion: 50 (G5), 51 (G5.1), 52 (G5.2, gathering points), 53 (after
-    //! G5.3: no motion mode), 0 none.
+    //! LinuxCNC's NURBS motion: 52 (G5.2, gathering points), 53 (after G5.3: no motion mode),
+    //! 0 none (G5 and G5.1 are not modal).
     int spline_mode_ = 0;
     std::vector<NurbsControlPoint> nurbs_points_;
     unsigned nurbs_order_ = 3;

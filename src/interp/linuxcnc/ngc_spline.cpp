@@ -1,7 +1,8 @@
 // LinuxCNC's splines: G5 (cubic), G5.1 (quadratic), G5.2 ... G5.3 (NURBS). The interpreter
 // gathers the control points; the curve becomes the biarcs of ngc_nurbs.hpp, run as G2/G3/G1
-// blocks in the plane, as LinuxCNC's motion controller runs it. G5 and G5.1 stay modal: a block
-// with axis words alone after them is another spline of the same kind.
+// blocks in the plane, as LinuxCNC's motion controller runs it. G5 and G5.1 are not modal in
+// LinuxCNC: the motion mode of before stays (a bare `X Y` after a G5 is a G1 there, and a
+// `P Q` on it an error); G5.2 is, until G5.3, after which there is no motion mode.
 #include <algorithm>
 #include <cmath>
 
@@ -60,7 +61,7 @@ bool NgcRunner::take_spline_block() {
         spline_mode_ = 0;
         return false;
     }
-    if (spline_mode_ == 0) return false;
+    if (spline_mode_ != 52 && spline_mode_ != 53) return false;
     const PlaneLetters l = letters_of(executor_.modal_view().plane);
     return std::any_of(block_.words.begin(), block_.words.end(), [&](const Word& w) {
         if (spline_mode_ == 52) return w.letter == l.first || w.letter == l.second || w.letter == 'P';
@@ -156,7 +157,7 @@ std::optional<InterpResult> NgcRunner::run_spline(std::vector<Move>& pending) {
         }
         points.push_back({end_first, end_second, 1});
         order = code == 50 ? 4 : 3;
-        spline_mode_ = code;
+        spline_mode_ = 0;
     } else if (code == 52) {
         const Word* a = word(l.first);
         const Word* b = word(l.second);
@@ -217,6 +218,7 @@ std::optional<Diagnostic> NgcRunner::run_spline_elements(const std::vector<Splin
                                                          std::vector<Move>& pending, bool& program_end) {
     const ModalView view = executor_.modal_view();
     const PlaneLetters l = letters_of(plane);
+    const GCode motion_before = executor_.motion_mode();
     for (const SplineElement& e : elements) {
         if (!std::isfinite(e.end_first) || !std::isfinite(e.end_second) || !std::isfinite(e.center_first) ||
             !std::isfinite(e.center_second)) {
@@ -243,6 +245,7 @@ std::optional<Diagnostic> NgcRunner::run_spline_elements(const std::vector<Splin
         back.words.push_back(Word{'G', 91.0, true, 1, -1});
         if (auto error = executor_.run(back, pending, program_end)) return error;
     }
+    executor_.restore_motion_mode(motion_before);
     return std::nullopt;
 }
 
