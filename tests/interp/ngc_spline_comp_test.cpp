@@ -111,6 +111,7 @@ TEST(NgcSpline, ErrorsAsLinuxCnc) {
     EXPECT_EQ(error_of("G17 F100\nG5.1 X1 Y1 Z1 I1 J1\nM2\n", linuxcnc_mill()).message,
               "splines may not have motion in Z, A, B, or C");
     EXPECT_EQ(error_of("G17 F100\nG5.3\nM2\n", linuxcnc_mill()).message, "cannot use G5.3 without G5.2 first");
+    EXPECT_EQ(error_of("G17\nG5.2 P1\nX1 Y1 P1\nM2\n", linuxcnc_mill()).message, "cannot make a NURBS with 0 feedrate");
     EXPECT_EQ(error_of("G17 F100\nG5.2 P1 L4\nX1 Y1 P1\nX2 Y0 P1\nG5.3\nM2\n", linuxcnc_mill()).message,
               "you must specify a number of control points at least equal to the order L = 4");
     EXPECT_EQ(error_of("G17 F100\nG5.2 P1\nX1 Y1\nG5.3\nM2\n", linuxcnc_mill()).message,

@@ -166,6 +166,9 @@ std::optional<InterpResult> NgcRunner::run_spline(std::vector<Move>& pending) {
                 fail(column,
                      fmt::format("you must specify both {} and {} coordinates for control points", l.first, l.second)));
         }
+        if (view.feed_mode == FeedMode::per_minute && view.feed == 0) {
+            return InterpResult(fail(column, "cannot make a NURBS with 0 feedrate"));
+        }
         if (spline_mode_ != 52) nurbs_points_.clear();
         if (a == nullptr && p != nullptr && p->value > 0 && !nurbs_points_.empty()) {
             return InterpResult(fail(
