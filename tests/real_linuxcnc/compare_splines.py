@@ -14,7 +14,9 @@ import argparse
 import fcntl
 import json
 import math
+import os
 import subprocess
+import tempfile
 import sys
 from pathlib import Path
 
@@ -70,7 +72,13 @@ def preview_points(program: Path) -> dict[int, list[tuple[float, float]]]:
     import gcode  # LinuxCNC's module (package linuxcnc-uspace), Debian's python3
 
     canon = PreviewCanon()
-    result = gcode.parse(str(program), canon, "G21", "")  # nckit's machine starts in mm
+    here = os.getcwd()
+    with tempfile.TemporaryDirectory(prefix="nckit-splines-") as scratch:
+        os.chdir(scratch)  # LinuxCNC's interpreter writes its parameter file where it runs
+        try:
+            result = gcode.parse(str(program.resolve()), canon, "G21", "")  # nckit's machine starts in mm
+        finally:
+            os.chdir(here)
     if result[0] > 5:  # INTERP_MIN_ERROR
         raise RuntimeError(f"LinuxCNC's interpreter refuses {program.name}: {result}")
     by_line: dict[int, list[tuple[float, float]]] = {}
