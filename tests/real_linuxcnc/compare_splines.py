@@ -72,11 +72,12 @@ def preview_points(program: Path) -> dict[int, list[tuple[float, float]]]:
     import gcode  # LinuxCNC's module (package linuxcnc-uspace), Debian's python3
 
     canon = PreviewCanon()
+    path = str(program.resolve())
     here = os.getcwd()
     with tempfile.TemporaryDirectory(prefix="nckit-splines-") as scratch:
         os.chdir(scratch)  # LinuxCNC's interpreter writes its parameter file where it runs
         try:
-            result = gcode.parse(str(program.resolve()), canon, "G21", "")  # nckit's machine starts in mm
+            result = gcode.parse(path, canon, "G21", "")  # nckit's machine starts in mm
         finally:
             os.chdir(here)
     if result[0] > 5:  # INTERP_MIN_ERROR
