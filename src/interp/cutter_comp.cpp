@@ -93,11 +93,14 @@ std::optional<CompError> CutterCompensator::add(Move move, std::vector<Move>& ou
             out.push_back(std::move(move));
             return std::nullopt;
         case Mode::waiting:
+            if (is_arc && linuxcnc_) return start_up_on_arc(std::move(move));
             if (is_arc) {
                 return error(move.where, "cutter-comp",
                              "cutter compensation cannot start on an arc: start it with a G0/G1 move in the plane");
             }
-            if (is_line && moves_in_plane(move)) return start_up(std::move(move), out);
+            // LinuxCNC takes the first straight move after G41/G42 as the start-up move even
+            // when it does not move in the plane (a Z plunge): too short, an error there.
+            if (is_line && (moves_in_plane(move) || linuxcnc_)) return start_up(std::move(move), out);
             if (leave_from_tool_) {
                 if (auto* line = std::get_if<Line>(&move.what)) {
                     line->from = tool_;
@@ -134,7 +137,10 @@ std::optional<CompError> CutterCompensator::start_up(Move move, std::vector<Move
     Vec2 from = in_plane(line.from, p);
     Vec2 to = in_plane(line.to, p);
     double distance = nckit::length(to - from);
-    if (distance <= radius_mm_) {
+    // LinuxCNC refuses a start-up move not longer than r, but compares against a radius that
+    // has been through its units' round trip: a move exactly r long (to rounding) runs there.
+    const bool too_short = linuxcnc_ ? distance < radius_mm_ - 1e-9 : distance <= radius_mm_;
+    if (too_short) {
         return error(move.where, "cutter-comp",
                      fmt::format("the start-up move is {:.4f} mm long in the plane, not longer than the tool "
                                  "radius {:.4f} mm",

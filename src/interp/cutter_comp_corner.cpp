@@ -87,6 +87,8 @@ std::vector<Vec2> samples_of(const Move& move, PlaneAxes p) {
 
 std::optional<CompError> CutterCompensator::check_clearance(const Segment& element, const SourceLocation& where,
                                                             const char* which) const {
+    // LinuxCNC checks only the corner itself: an element farther on may come nearer than r.
+    if (linuxcnc_) return std::nullopt;
     // Interference beyond the corner: an arc cut from outside may bulge back toward the offset
     // of its neighbour. The settled move must keep r from both neighbouring contour elements.
     PlaneAxes p = plane_axes(plane_);

@@ -16,7 +16,10 @@ constexpr double least_increment_inch = 0.0001;
 }  // namespace
 
 Executor::Executor(const MachineConfig& machine, const InterpreterOptions& options)
-    : machine_(machine), options_(options), tools_(machine.tools), comp_(machine.cutter_comp_startup) {
+    : machine_(machine),
+      options_(options),
+      tools_(machine.tools),
+      comp_(machine.cutter_comp_startup, machine.dialect == Dialect::linuxcnc) {
     for (const AxisConfig& axis : machine.axes) {
         configured_.insert(axis.axis);
         rotary_[index(axis.axis)] = axis.kind == AxisKind::rotary;

@@ -65,6 +65,11 @@ public:
         programmed_ = machine;
     }
 
+    //! The active group-1 code. The LinuxCNC dialect runs its splines as G2/G3 blocks and then
+    //! puts back the motion mode of before, which LinuxCNC's G5/G5.1 leave as it was.
+    [[nodiscard]] GCode motion_mode() const { return modal_.motion; }
+    void restore_motion_mode(GCode motion) { modal_.motion = motion; }
+
     [[nodiscard]] bool inch_units() const { return modal_.length_factor_mm != 1.0; }
     //! Units, offsets and modes after the last block run (executor_modal_view.cpp).
     [[nodiscard]] ModalView modal_view() const;

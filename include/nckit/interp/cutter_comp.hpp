@@ -30,7 +30,10 @@ struct CompError {
 
 class CutterCompensator {
 public:
-    explicit CutterCompensator(CompStartup startup = CompStartup::type_b) : startup_(startup) {}
+    //! `linuxcnc`: LinuxCNC's rules (docs/gcode-linuxcnc.md): a start-up move one radius long
+    //! runs, a start-up on an arc runs, and no clearance check beyond the corner.
+    explicit CutterCompensator(CompStartup startup = CompStartup::type_b, bool linuxcnc = false)
+        : startup_(startup), linuxcnc_(linuxcnc) {}
 
     //! Something is on, held, or the move after G40 is still to come: moves must go through add().
     [[nodiscard]] bool engaged() const { return mode_ != Mode::off; }
@@ -76,6 +79,8 @@ private:
     };
 
     std::optional<CompError> start_up(Move move, std::vector<Move>& out);
+    //! LinuxCNC's start-up on an arc (cutter_comp_arc_entry.cpp).
+    std::optional<CompError> start_up_on_arc(Move move);
     std::optional<CompError> next_planar(Move move, std::vector<Move>& out);
     //! next_planar() for the first planar move after change_offset() (cutter_comp_change.cpp).
     std::optional<CompError> next_with_new_offset(Move move, std::vector<Move>& out);
@@ -92,6 +97,7 @@ private:
     [[nodiscard]] CompError error(const SourceLocation& where, std::string code, std::string message) const;
 
     CompStartup startup_;
+    bool linuxcnc_ = false;
     Mode mode_ = Mode::off;
     int side_ = 1;  //!< +1 left (G41), -1 right (G42)
     double radius_mm_ = 0;

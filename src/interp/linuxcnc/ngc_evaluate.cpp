@@ -113,12 +113,15 @@ private:
                 return std::abs(l - r) >= tolerance_equal ? 1 : 0;
             case Op::gt:
                 return l > r ? 1 : 0;
+            // LinuxCNC 2.9 (the rs274 nckit is compared with) compares GE and LE exactly; only EQ
+            // and NE take its tolerance. A loop `while [#6 LE #3]` stepping #6 by 0.0005 to 0.0375
+            // ends one step early when the sum overshoots by a rounding error, as there.
             case Op::ge:
-                return (std::abs(l - r) < tolerance_equal || l >= r) ? 1 : 0;
+                return l >= r ? 1 : 0;
             case Op::lt:
                 return l < r ? 1 : 0;
             case Op::le:
-                return (std::abs(l - r) < tolerance_equal || l <= r) ? 1 : 0;
+                return l <= r ? 1 : 0;
             case Op::logical_and:
                 return (l == 0 || r == 0) ? 0 : 1;
             case Op::logical_or:

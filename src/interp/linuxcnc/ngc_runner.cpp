@@ -188,6 +188,7 @@ std::optional<InterpResult> NgcRunner::run_ordinary(std::vector<Move>& pending) 
         }
     }
     if (g7x_word() != nullptr) return run_g7x(pending);
+    if (take_spline_block()) return run_spline(pending);
     if (auto error = read_inverse_time()) return InterpResult(std::move(*error));
     if (auto error = translate_g92_kept()) return InterpResult(std::move(*error));
     if (auto error = translate_block()) return InterpResult(std::move(*error));
@@ -205,20 +206,32 @@ std::optional<InterpResult> NgcRunner::run_ordinary(std::vector<Move>& pending) 
         }
     }
     apply_inverse_time(pending, first_new);
-    follow_linuxcnc_tapping(pending, first_new);
-    if (probing) {
-        // LinuxCNC 2.9 refuses G38.2/G38.4 to the very point where the tool stands (every axis
-        // equal); G38.3/G38.5 there, and any probe of some length, run.
+    if (probing && probe_must_move) {
+        // LinuxCNC 2.9 refuses G38.2/G38.4 to the very point where its interpreter stands (every
+        // axis equal); G38.3/G38.5 there, and any probe of some length, run. After a probe that
+        // point is the backed-off one, not the tool's (below), so the check comes before the
+        // move is made to start where the tool is.
         for (std::size_t i = first_new; i < pending.size(); ++i) {
             const auto* line = std::get_if<Line>(&pending[i].what);
-            if (line != nullptr && probe_must_move && line->to == line->from) {
+            if (line != nullptr && line->to == line->from) {
                 return InterpResult(fail(1, "start point too close to probe point (G38.2/G38.4 to where the tool is)"));
             }
         }
-        probe_result_.emplace();
-        for (std::size_t i = 0; i < probe_result_->size(); ++i) {
-            (*probe_result_)[i] = axis_position(axis_letters_ngc[i]).value_or(0.0);
+    }
+    // The probe's start as the interpreter knows it (backed off after an earlier probe): rs274
+    // backs off along the probe's direction from there, not from where the tool stands.
+    probe_start_.reset();
+    for (std::size_t i = first_new; probing && i < pending.size(); ++i) {
+        if (const auto* line = std::get_if<Line>(&pending[i].what)) probe_start_ = line->from;
+    }
+    follow_linuxcnc_tapping(pending, first_new);
+    if (probing) {
+        // Plain parameters from here on, as LinuxCNC sets them after a probe: a program may
+        // set #5070 itself (to 1 before a `while [#5070 NE 0]` loop of probes).
+        for (std::size_t i = 0; i < axis_letters_ngc.size(); ++i) {
+            parameters_.write(5061 + static_cast<std::int64_t>(i), axis_position(axis_letters_ngc[i]).value_or(0.0));
         }
+        parameters_.write(5070, 0.0);  // rs274 simulates a probe that never trips
         if (auto error = back_off_after_probe(pending, first_new)) return InterpResult(std::move(*error));
     }
     if (program_end) return InterpResult(ProgramEnd{});
@@ -235,8 +248,9 @@ std::optional<Diagnostic> NgcRunner::back_off_after_probe(std::vector<Move>& pen
     }
     if (probe == nullptr) return std::nullopt;
     const AxisVector point = probe->to;
-    double back[3] = {probe->from[Axis::X] - point[Axis::X], probe->from[Axis::Y] - point[Axis::Y],
-                      probe->from[Axis::Z] - point[Axis::Z]};
+    const AxisVector start = probe_start_.value_or(probe->from);
+    double back[3] = {start[Axis::X] - point[Axis::X], start[Axis::Y] - point[Axis::Y],
+                      start[Axis::Z] - point[Axis::Z]};
     const double length = std::sqrt(back[0] * back[0] + back[1] * back[1] + back[2] * back[2]);
     if (length == 0) {  // a probe of no length in X Y Z backs off nowhere (rs274's canon)
         tool_at_ = point;

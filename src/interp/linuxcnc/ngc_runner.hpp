@@ -16,6 +16,7 @@
 #include "../executor.hpp"
 #include "ngc_g7x_profile.hpp"
 #include "ngc_line.hpp"
+#include "ngc_nurbs.hpp"
 #include "ngc_parameters.hpp"
 #include "nckit/interp/interpreter.hpp"
 
@@ -117,6 +118,14 @@ private:
     std::optional<Diagnostic> run_g7x_moves(const std::vector<ProfileMove>& moves, ZX from, const SourceLocation& where,
                                             std::vector<Move>& pending);
 
+    // ngc_spline.cpp: G5, G5.1, G5.2/G5.3 as LinuxCNC's biarcs.
+    //! The block is a spline's (names G5.x, or carries control point words while G5.2 gathers
+    //! them, or axis words after G5.3). A block with another motion code ends that state.
+    bool take_spline_block();
+    std::optional<InterpResult> run_spline(std::vector<Move>& pending);
+    std::optional<Diagnostic> run_spline_elements(const std::vector<SplineElement>& elements, Plane plane,
+                                                  std::vector<Move>& pending, bool& program_end);
+
     // ngc_fanuc_subs.cpp: M98 and M99.
     std::optional<InterpResult> run_fanuc_sub_words(std::vector<Move>& pending);
 
@@ -182,10 +191,17 @@ private:
     bool error_is_recoverable_ = false;
     //! Where the tool stands after a turned tapping feed: the next move starts there.
     std::optional<AxisVector> tool_at_;
-    //! #5061-#5069 after a G38.x probe: its end point, program units, X Y Z A B C U V W.
-    std::optional<std::array<double, 9>> probe_result_;
+    //! The running probe's start as the interpreter knows it (machine mm), for its back-off.
+    std::optional<AxisVector> probe_start_;
     //! While a lathe cycle reads its shape: the shape so far.
     std::optional<ProfileReading> profile_;
+    //! LinuxCNC's NURBS motion: 52 (G5.2, gathering points), 53 (after G5.3: no motion mode),
+    //! 0 none (G5 and G5.1 are not modal).
+    int spline_mode_ = 0;
+    std::vector<NurbsControlPoint> nurbs_points_;
+    unsigned nurbs_order_ = 3;
+    //! I J of a G5 without them: -P -Q of the G5 before (the curve goes on smoothly).
+    double spline_next_ij_[2]{};
     //! After G92.2: the G92 offsets #5211-#5219 kept for G92.3, program units (X Y Z A B C U V W).
     std::optional<std::array<double, 9>> g92_kept_;
 };

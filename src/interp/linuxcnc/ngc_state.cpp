@@ -61,8 +61,6 @@ std::optional<double> NgcRunner::live_numbered(std::int64_t n) const {
     auto axis_of = [&](std::int64_t base) -> std::optional<Axis> {
         return axis_from_letter(axis_letters[static_cast<std::size_t>(n - base)]);
     };
-    if (n >= 5061 && n <= 5069 && probe_result_) return (*probe_result_)[static_cast<std::size_t>(n - 5061)];
-    if (n == 5070 && probe_result_) return 0.0;  // rs274 simulates a probe that never trips
     if (n >= 5161 && n <= 5169) {
         auto axis = axis_of(5161);
         const AxisConfig* config = axis ? machine_.find(*axis) : nullptr;
