@@ -30,35 +30,61 @@ std::vector<double> knots_for(unsigned n, unsigned k) {
     return knots;
 }
 
+//! The basis functions of order k at u that can be non-zero: values[m] belongs to control point
+//! first + m; every other one is exactly zero.
+struct BasisWindow {
+    std::size_t first = 0;
+    std::vector<double> values;
+};
+
 //! The order-k basis functions at u, level by level (the recursion's values, without its
 //! repeated work). Level 1 counts u in every closed span [t_i, t_i+1], as LinuxCNC does, and a
-//! span of no length drops its term.
-std::vector<double> basis_at(double u, unsigned k, const std::vector<double>& t) {
-    std::vector<double> level(t.size() - 1);
-    for (std::size_t i = 0; i + 1 < t.size(); ++i) level[i] = (u >= t[i] && u <= t[i + 1]) ? 1.0 : 0.0;
+//! span of no length drops its term. Only the spans around u are computed: level 1 is non-zero on
+//! [lo, hi] alone and each level widens that by one to the left, so a point costs k^2 whatever
+//! the number of control points (up to 20,000, each curve evaluated at 4 points per control point).
+BasisWindow basis_at(double u, unsigned k, const std::vector<double>& t) {
+    const std::size_t spans = t.size() - 1;
+    // lo: the first span whose end reaches u; hi: the last span whose start is at or below u.
+    const auto lo = static_cast<std::size_t>(std::lower_bound(t.begin() + 1, t.end(), u) - (t.begin() + 1));
+    const auto past = static_cast<std::size_t>(std::upper_bound(t.begin(), t.end() - 1, u) - t.begin());
+    BasisWindow window;
+    if (past == 0 || lo >= spans) return window;  // u outside the knots: every basis function is 0
+    const std::size_t hi = past - 1;
+    window.first = lo >= k - 1 ? lo - (k - 1) : 0;
+    // level[m] is the value of index first + m; one zero past the end stands for hi + 1.
+    std::vector<double> level(hi - window.first + 2, 0.0);
+    for (std::size_t i = std::max(window.first, lo); i <= hi; ++i) {
+        level[i - window.first] = (u >= t[i] && u <= t[i + 1]) ? 1.0 : 0.0;
+    }
     for (unsigned j = 2; j <= k; ++j) {
-        std::vector<double> next(t.size() - j);
-        for (std::size_t i = 0; i < next.size(); ++i) {
+        const std::size_t count = t.size() - j;  // basis functions of this level
+        std::vector<double> next(level.size(), 0.0);
+        for (std::size_t m = 0; m + 1 < level.size() && window.first + m < count; ++m) {
+            const std::size_t i = window.first + m;
             const double left_span = t[i + j - 1] - t[i];
             const double right_span = t[i + j] - t[i + 1];
             double value = 0;
-            if (left_span != 0) value += (u - t[i]) * level[i] / left_span;
-            if (right_span != 0) value += (t[i + j] - u) * level[i + 1] / right_span;
-            next[i] = value;
+            if (left_span != 0) value += (u - t[i]) * level[m] / left_span;
+            if (right_span != 0) value += (t[i + j] - u) * level[m + 1] / right_span;
+            next[m] = value;
         }
         level = std::move(next);
     }
-    return level;
+    const std::size_t count = t.size() - k;
+    level.resize(std::min(level.size() - 1, count > window.first ? count - window.first : 0));
+    window.values = std::move(level);
+    return window;
 }
 
 PlanePoint point_at(double u, unsigned k, const std::vector<NurbsControlPoint>& points, const std::vector<double>& t) {
-    const std::vector<double> basis = basis_at(u, k, t);
+    const BasisWindow basis = basis_at(u, k, t);
     double weight = 0;
-    for (std::size_t i = 0; i < points.size(); ++i) weight += basis[i] * points[i].weight;
+    for (std::size_t m = 0; m < basis.values.size(); ++m) weight += basis.values[m] * points[basis.first + m].weight;
     PlanePoint p;
-    for (std::size_t i = 0; i < points.size(); ++i) {
-        p.first += points[i].first * basis[i] * points[i].weight / weight;
-        p.second += points[i].second * basis[i] * points[i].weight / weight;
+    for (std::size_t m = 0; m < basis.values.size(); ++m) {
+        const NurbsControlPoint& c = points[basis.first + m];
+        p.first += c.first * basis.values[m] * c.weight / weight;
+        p.second += c.second * basis.values[m] * c.weight / weight;
     }
     return p;
 }
