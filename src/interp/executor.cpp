@@ -37,6 +37,13 @@ Diagnostic Executor::error(std::uint32_t column, std::string code, std::string m
     return error_at(block_->at_column(column), std::move(code), std::move(message));
 }
 
+void Executor::warn(std::uint32_t column, std::string code, std::string message) const {
+    if (!options_.on_warning) return;
+    Diagnostic warning = error(column, std::move(code), std::move(message));
+    warning.severity = Severity::warning;
+    options_.on_warning(warning);
+}
+
 std::uint32_t Executor::column_of(char letter) const {
     const Word* word = words_.word(letter);
     return word != nullptr ? word->column : 1;
@@ -186,15 +193,12 @@ void Executor::warn_overridden_codes() const {
         // cycle); within one group the code written last is valid.
         const bool cycle_beside_motion =
             is_drilling_cycle(o.ignored) && !is_drilling_cycle(o.valid) && o.valid != g(80);
-        Diagnostic warning =
-            error(o.column, "gcode-overridden",
-                  cycle_beside_motion
-                      ? fmt::format("{} is ignored: {} in the same block cancels the drilling cycle", ignored, valid)
-                      : fmt::format("{} is ignored: {} of the same modal group, written later in the "
-                                    "block, is valid",
-                                    ignored, valid));
-        warning.severity = Severity::warning;
-        options_.on_warning(warning);
+        warn(o.column, "gcode-overridden",
+             cycle_beside_motion
+                 ? fmt::format("{} is ignored: {} in the same block cancels the drilling cycle", ignored, valid)
+                 : fmt::format("{} is ignored: {} of the same modal group, written later in the "
+                               "block, is valid",
+                               ignored, valid));
     }
 }
 
@@ -298,13 +302,10 @@ std::optional<Diagnostic> Executor::dwell(std::vector<Move>& out) {
         options_.on_warning) {
         // A Fanuc control reads P as a whole count of milliseconds: P1.5 is most likely meant as
         // 1.5 seconds (LinuxCNC's reading), which is X1.5 or P1500.
-        Diagnostic warning =
-            error(time->column, "dwell-decimal",
-                  fmt::format("G4 P{}: P counts milliseconds, so this dwells {} ms; for {} s "
-                              "write X{} or P{}",
-                              time->value, time->value, time->value, time->value, time->value * 1000.0));
-        warning.severity = Severity::warning;
-        options_.on_warning(warning);
+        warn(time->column, "dwell-decimal",
+             fmt::format("G4 P{}: P counts milliseconds, so this dwells {} ms; for {} s "
+                         "write X{} or P{}",
+                         time->value, time->value, time->value, time->value, time->value * 1000.0));
     }
     push(out, Dwell{seconds});
     return std::nullopt;

@@ -126,6 +126,8 @@ private:
     [[nodiscard]] double work_x() const;  //!< X of the current position in work coordinates, mm
 
     [[nodiscard]] Diagnostic error(std::uint32_t column, std::string code, std::string message) const;
+    //! The same diagnostic as a warning, handed to options_.on_warning (if one is set).
+    void warn(std::uint32_t column, std::string code, std::string message) const;
     [[nodiscard]] std::uint32_t column_of(char letter) const;
     [[nodiscard]] std::uint32_t motion_column() const;
     void push(std::vector<Move>& out, decltype(Move::what) what) const;

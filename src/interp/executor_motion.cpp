@@ -177,12 +177,10 @@ void Executor::warn_if_implausibly_small(const Arc& arc) {
         return;
     }
     warned_small_arc_ = true;
-    Diagnostic warning = error(motion_column(), "implausible-size",
-                               fmt::format("an arc of {:.4g} mm diameter: implausibly small for a cut; is the program "
-                                           "in inches (G20 missing)?",
-                                           diameter_mm));
-    warning.severity = Severity::warning;
-    options_.on_warning(warning);
+    warn(motion_column(), "implausible-size",
+         fmt::format("an arc of {:.4g} mm diameter: implausibly small for a cut; is the program "
+                     "in inches (G20 missing)?",
+                     diameter_mm));
 }
 
 std::optional<Diagnostic> Executor::arc(GCode motion, const AxisVector& target, std::vector<Move>& out) {

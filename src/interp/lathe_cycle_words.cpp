@@ -82,13 +82,11 @@ std::optional<Diagnostic> Executor::check_lathe_cycle_words(GCode cycle) const {
             }
         }
     }
-    if (!ignored.empty() && options_.on_warning) {
-        Diagnostic warning = error(ignored_column, "ignored-word",
-                                   fmt::format("{} does not use {} (words of the roughing cycles): on this Haas lathe "
-                                               "they are read and ignored; {} P Q finishes the shape as programmed",
-                                               name, ignored, name));
-        warning.severity = Severity::warning;
-        options_.on_warning(warning);
+    if (!ignored.empty()) {
+        warn(ignored_column, "ignored-word",
+             fmt::format("{} does not use {} (words of the roughing cycles): on this Haas lathe "
+                         "they are read and ignored; {} P Q finishes the shape as programmed",
+                         name, ignored, name));
     }
     if (const Word* f = words_.word('F'); f != nullptr && f->value <= 0) {
         return error(f->column, "bad-value", fmt::format("{} needs a positive F", name));

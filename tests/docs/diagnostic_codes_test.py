@@ -4,13 +4,13 @@ page lists is still raised somewhere, so the page cannot drift from the code.
 
 A code is the string literal right after the location in a call that makes a diagnostic
 (`error_at(where, "travel-limit", ...)`, `sink.error(where, "config-value", ...)`,
-`error(column, "bad-arc", ...)`), or one assigned to `.code`. The page lists a code in
+`error(column, "bad-arc", ...)`, `warn(column, "dwell-decimal", ...)`), or one assigned to `.code`. The page lists a code in
 backquotes in the first column of a table row. Usage: diagnostic_codes_test.py [SOURCE_DIR]"""
 import re
 import sys
 from pathlib import Path
 
-RAISED = re.compile(r'\b(?:error_at|error|fail)\s*\(\s*(?:[^;"]|"[^"\n]*")*?,\s*"([a-z][a-z0-9-]*)"\s*,',
+RAISED = re.compile(r'\b(?:error_at|error|fail|warn)\s*\(\s*(?:[^;"]|"[^"\n]*")*?,\s*"([a-z][a-z0-9-]*)"\s*,',
                     re.S)
 ASSIGNED = re.compile(r'\.code\s*=\s*"([a-z][a-z0-9-]*)"')
 LISTED = re.compile(r"^\|\s*([^|]*)\|", re.M)
