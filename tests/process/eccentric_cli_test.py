@@ -87,6 +87,13 @@ with tempfile.TemporaryDirectory() as tmp:
             "--cam-table", os.path.join(tmp, "never2.csv"))
     assert r.returncode == 2 and re.search(rf"fine\.toml:{line}:15: error: --program: 30000 turns", r.stderr), r.stderr
     assert not os.path.exists(os.path.join(tmp, "never.nc")) and not os.path.exists(os.path.join(tmp, "never2.csv"))
+    # A lead-in of two turns below the program's 0.00001 mm: exit 2 at feed_mm_rev.
+    with open(fine, "w") as f:
+        f.write(good_text.replace("feed_mm_rev = 0.1", "feed_mm_rev = 0.000001").replace("z_end_mm = -30.0",
+                                                                                        "z_end_mm = -0.001"))
+    r = run("eccentric", fine, "--machine", lathe, "--program", os.path.join(tmp, "never.nc"))
+    assert r.returncode == 2 and re.search(rf"fine\.toml:{line}:15: error: --program: two turns", r.stderr), r.stderr
+    assert not os.path.exists(os.path.join(tmp, "never.nc"))
 
     # Fuzz findings: fewer than 3 updates a turn cannot fit a circle (it reported an offset of
     # 1.8e20 um and roundness 0); a speed above the highest within 1 um is an error, not exit 0.

@@ -13,6 +13,8 @@
 
 #include <fmt/format.h>
 
+#include "nckit/core/format_exact.hpp"
+
 #include "nckit/process/fts/stroke_reference.hpp"
 
 namespace nckit {
@@ -63,11 +65,13 @@ std::string piston_program(const cam::PistonJob& job, const PistonProgramOptions
     out += "G18 G21 G40 G97 G99\nT0101\n";
     out += fmt::format("G00 X{} Z{}\n", number(largest + 2.0 * clearance_mm), number(clearance_mm - z_from));
     out += fmt::format("G00 X{}\n", number(diameter_at(z_from)));
-    out += fmt::format("S{:g} M03\n", job.rpm);
+    out += fmt::format("S{:.0f} M03\n", job.rpm);  // S is a whole number on a Fanuc
     const double settle_s = 60.0 * options.air_turns / job.rpm;
     out += fmt::format("G04 X{:.4f} ({} turns: the servo settles on the oval before the cut)\n", settle_s,
                        options.air_turns);
-    out += fmt::format("G01 Z{} F{:g}\n", number(-z_from), job.feed_mm_rev);
+    out += fmt::format("G01 Z{} F", number(-z_from));
+    append_exact(out, job.feed_mm_rev);  // a plain decimal, never an exponent
+    out += "\n";
     for (std::size_t k = 1; k <= steps; ++k) {
         const double z =
             k == steps ? z_to : z_from + (z_to - z_from) * static_cast<double>(k) / static_cast<double>(steps);
