@@ -11,7 +11,7 @@ namespace nckit {
 //! it leaves the cam by at most max|a''|·Δθ²/8 (e(1 + e/r)·Δθ²/8: 0.13 µm for e 3, r 20).
 inline constexpr int eccentric_program_blocks_per_turn = 360;
 
-//! Most blocks a program may have (about 60 MB of text); more is an error at `feed_mm_rev`.
+//! Most blocks a program may have (about 80 MB of text); more is an error at `feed_mm_rev`.
 inline constexpr double eccentric_program_max_blocks = 2e6;
 
 //! A Fanuc lathe program in G-code system A (docs/gcode-lathe.md) that turns the job's eccentric
