@@ -2,10 +2,13 @@
 // electronic cam) instead of a macro of short blocks. Simulates the cut section on the machine's
 // X axis (its servo model when it has one, with and without feedforward from the known cam),
 // reports roundness and centre offset against the drawing and the highest spindle speed the X
-// axis can follow within 1 µm; --cam-table writes the cam, X diameter per degree.
+// axis can follow within 1 µm; --cam-table writes the cam, X diameter per degree; --program the
+// cam as a Fanuc lathe program, one block a degree.
 #include <cmath>
 #include <numbers>
 #include <optional>
+#include <string>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -15,6 +18,7 @@
 #include "partial_file.hpp"
 #include "nckit/process/eccentric/eccentric.hpp"
 #include "nckit/process/eccentric/eccentric_json.hpp"
+#include "nckit/process/eccentric/eccentric_program.hpp"
 #include "verbs.hpp"
 
 namespace nckit::cli {
@@ -27,6 +31,7 @@ struct EccentricOptions {
     bool json = false;
     std::string cam_table;
     std::string html;
+    std::string program;
 };
 
 void print_json(const EccentricReport& r) {
@@ -49,6 +54,13 @@ void print_text(const EccentricReport& r, const std::string& name) {
     }
     fmt::print("  highest spindle speed within 1 um: {:.4g} rpm (limited by {})\n", r.max_rpm, r.limited_by);
     fmt::print("  pass: {:.6g} turns, {:.3f} s\n", r.turns, r.cycle_time_s);
+}
+
+bool write_text(const std::string& path, const std::string& text) {
+    std::optional<PartialFile> file = PartialFile::create(path);
+    if (!file) return false;
+    file->write(text);
+    return file->commit();
 }
 
 bool write_cam_table(const std::string& path, const EccentricJob& job) {
@@ -75,7 +87,17 @@ int run_eccentric(const EccentricOptions& options) {
         print_diagnostics(report.diagnostics());
         return exit_bad_input;
     }
+    std::optional<std::string> program;
+    if (!options.program.empty()) {
+        Result<std::string> text = eccentric_program(*job, options.job);
+        if (!text) {
+            print_diagnostics(text.diagnostics());
+            return exit_bad_input;
+        }
+        program = std::move(text).value();
+    }
     if (!options.cam_table.empty() && !write_cam_table(options.cam_table, *job)) return exit_bad_input;
+    if (program && !write_text(options.program, *program)) return exit_bad_input;
     if (!options.html.empty() && !write_page(eccentric_page(*report, options.job), options.html)) return exit_bad_input;
     if (options.json) {
         print_json(*report);
@@ -95,6 +117,8 @@ void add_eccentric_verb(CLI::App& app, int& exit_status) {
     verb->add_flag("--json", options->json, "print the report as JSON");
     verb->add_option("--cam-table", options->cam_table, "write the cam as CSV: theta_deg,x_diameter_mm");
     verb->add_option("--html", options->html, "write an interactive page: section, centre offset, cam (HTML)");
+    verb->add_option("--program", options->program,
+                     "write the cam as a Fanuc lathe program (G-code system A), one block a degree");
     verb->callback([options, &exit_status] { exit_status = run_eccentric(*options); });
 }
 

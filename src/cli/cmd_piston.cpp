@@ -2,7 +2,8 @@
 // drawing, cuts the piston in simulation three ways (no compensation, feedforward, feedforward
 // plus learning across revolutions) with the job's servo, model error and spindle ripple, and
 // reports the profile error of each; --cam-table, --trace and --svg write the cam, the learning
-// run's last turns tick by tick and the plots. A bad job writes nothing.
+// run's last turns tick by tick and the plots, --program the slide's path as a Fanuc lathe
+// program. A bad job writes nothing.
 #include <cmath>
 #include <filesystem>
 #include <optional>
@@ -18,6 +19,7 @@
 #include "partial_file.hpp"
 #include "nckit/process/piston/piston.hpp"
 #include "nckit/process/piston/piston_json.hpp"
+#include "nckit/process/piston/piston_program.hpp"
 #include "nckit/process/piston/piston_svg.hpp"
 #include "verbs.hpp"
 
@@ -34,6 +36,7 @@ struct PistonOptions {
     std::string trace;
     int trace_turns = 3;
     std::string html;
+    std::string program;
 };
 
 void print_text(const PistonSimulation& s, const cam::PistonJob& job, const std::string& name) {
@@ -118,6 +121,9 @@ int run_piston(PistonOptions options) {
     if (!options.html.empty()) {
         outputs.emplace_back(options.html, render_report_html(piston_page(job, *simulation, options.job)));
     }
+    if (!options.program.empty()) {
+        outputs.emplace_back(options.program, piston_program(job, {simulation->parameters.air_turns, options.job}));
+    }
     if (!write_outputs(outputs)) return exit_bad_input;
     if (options.json) {
         fmt::print("{}\n", to_json(*simulation).dump());
@@ -141,6 +147,8 @@ void add_piston_verb(CLI::App& app, int& exit_status) {
                      "write the drawn profile at the stations, every degree: z_mm,phi_deg,radius_mm");
     verb->add_option("--html", options->html,
                      "write an interactive page: section, error per turn, learning convergence (HTML)");
+    verb->add_option("--program", options->program,
+                     "write the slide's path as a Fanuc lathe program (G-code system A, X diameters)");
     CLI::Option* trace =
         verb->add_option("--trace", options->trace, "write the learning run's last turns at every control tick (CSV)");
     verb->add_option("--trace-turns", options->trace_turns, "turns in --trace (default 3)")

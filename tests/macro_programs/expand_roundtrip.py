@@ -11,8 +11,8 @@ whether the move ends in an exact stop (G61, G9); for dwells the time (1e-9 s); 
 code and its spindle speed. Source lines differ by design and are not compared.
 
 The machine comes from a `( nckit-machine: FILE )` comment in the program's first 5 lines
-(resolved against examples/machines/), block delete from `( nckit-block-delete: on )`, as in
-tests/programs/compare_linuxcnc.py. Called programs are looked up in --library (default: the
+(resolved against examples/machines/), or from --machine for every program, block delete from
+`( nckit-block-delete: on )`, as in tests/programs/compare_linuxcnc.py. Called programs are looked up in --library (default: the
 programs folder's `library/` when there is one); retained variables go to scratch files.
 
 Exit status: 0 when every program round-trips, 1 otherwise.
@@ -135,6 +135,8 @@ def differ(orig: dict, back: dict) -> str | None:
 
 def round_trip(program: Path, args, workdir: Path) -> str:
     machine, block_delete = setup_of(program, args.machines)
+    if args.machine is not None:
+        machine = args.machine
     expanded = workdir / "expanded.ngc"
     cmd = [args.nckit, "expand", str(program), "-o", str(expanded),
            "--vars", str(workdir / "expand.vars")]
@@ -173,6 +175,8 @@ def main() -> int:
                     help="folder of NN_name.nc / .ngc programs (default: this script's folder)")
     ap.add_argument("--machines", type=Path, default=DEFAULT_MACHINES,
                     help="folder the nckit-machine comments refer to (%(default)s)")
+    ap.add_argument("--machine", type=Path, default=None,
+                    help="machine file for every program, in place of their nckit-machine comments")
     ap.add_argument("--library", type=Path, default=None,
                     help="folder of called programs (default: PROGRAMS/library when it exists)")
     ap.add_argument("--keep-expanded", type=Path, default=None, metavar="DIR",
@@ -181,6 +185,8 @@ def main() -> int:
     args = ap.parse_args()
 
     args.programs, args.machines = args.programs.resolve(), args.machines.resolve()
+    if args.machine is not None:
+        args.machine = args.machine.resolve()
     if args.library is None and (args.programs / "library").is_dir():
         args.library = args.programs / "library"
     if args.library is not None:

@@ -1,8 +1,11 @@
 #!/usr/bin/env python3
 """`nckit eccentric` on the example: the JSON contract, the worked cam, a slide limited by its
-acceleration, the servo's lag without feedforward, the cam table, and a bad job exiting 2."""
+acceleration, the servo's lag without feedforward, the cam table, the --program output read back
+by `nckit moves` on the example Fanuc lathe (X on the cam at every degree, each block one degree
+of the turn), and a bad job exiting 2."""
 import csv
 import json
+import math
 import os
 import re
 import subprocess
@@ -36,6 +39,35 @@ with tempfile.TemporaryDirectory() as tmp:
     assert len(rows) == 360 and float(rows[0]["x_diameter_mm"]) == 46.0
     assert abs(float(rows[90]["x_diameter_mm"]) - 39.547440) < 1e-6
 
+    # --program: one block a degree after a two-turn G32 lead-in from the index, read back on
+    # the example lathe (system A, feed per revolution).
+    program = os.path.join(tmp, "eccentric.nc")
+    r = run("eccentric", job, "--machine", lathe, "--program", program)
+    assert r.returncode == 0, r.stderr
+    r = run("moves", program, "--machine", lathe, "--json")
+    assert r.returncode == 0 and r.stderr == "", r.stderr
+    records = [json.loads(line) for line in r.stdout.splitlines() if line.strip()]
+    sync = [m for m in records if m["kind"] == "sync"]
+    blocks = [m for m in records if m["kind"] == "linear"]
+    assert len(sync) == 1 and sync[0]["feed_mm_rev"] == 0.1 and sync[0]["end"]["Z"] == 0.0, sync
+    assert sync[0]["end"]["X"] == 23.0  # radius e + r at theta 0
+    assert len(blocks) == 300 * 360, len(blocks)  # 30 mm at 0.1 mm/rev, one block a degree
+    # X (a radius here) on the cam a(theta) = e cos theta + sqrt(r^2 - e^2 sin^2 theta) at whole turns
+    # and quarter turns: the worked values of docs/processes/eccentric.md.
+    for k, radius in ((90, 19.77372), (180, 17.0), (270, 19.77372), (360, 23.0), (360 * 150 + 90, 19.77372)):
+        assert abs(blocks[k - 1]["end"]["X"] - radius) < 1e-5, (k, blocks[k - 1]["end"])
+    for k in (1, 45, 1000, 54321):
+        e_, r_, t = 3.0, 20.0, math.radians(k)
+        a = e_ * math.cos(t) + math.sqrt(r_ * r_ - e_ * e_ * math.sin(t) ** 2)
+        assert abs(blocks[k - 1]["end"]["X"] - a) < 1e-5 and abs(blocks[k - 1]["end"]["Z"] + 0.1 * k / 360) < 1e-5
+    # Each block lasts one degree of the turn: its path (X as a radius) over its feed per
+    # revolution is 1/360; the pass is 300 turns.
+    turns = [math.hypot(m["end"]["X"] - m["start"]["X"], m["end"]["Z"] - m["start"]["Z"]) / m["feed_mm_rev"]
+             for m in blocks]
+    assert max(abs(t - 1 / 360) for t in turns) < 1e-8, max(abs(t - 1 / 360) for t in turns)
+    assert abs(sum(turns) - 300) < 1e-6, sum(turns)
+    assert blocks[-1]["end"]["Z"] == -30.0
+
     bad = os.path.join(tmp, "bad.toml")
     with open(bad, "w") as f:
         f.write("[eccentric]\nblank_diameter_mm = 60.0\neccentricity_mm = 3.0\neccentric_radius_mm = 20.0\n"
@@ -44,6 +76,24 @@ with tempfile.TemporaryDirectory() as tmp:
     assert r.returncode == 2, r.returncode
     assert re.search(r"bad\.toml:7:7: error: at 400 rpm the X axis would need .* up to 115 rpm", r.stderr), r.stderr
     assert not os.path.exists(os.path.join(tmp, "never.csv"))
+    # A program of more than two million blocks: exit 2 at feed_mm_rev, nothing written.
+    with open(job) as f:
+        good_text = f.read()
+    fine = os.path.join(tmp, "fine.toml")
+    with open(fine, "w") as f:
+        f.write(good_text.replace("feed_mm_rev = 0.1", "feed_mm_rev = 0.001"))
+    line = next(i for i, text in enumerate(good_text.splitlines(), 1) if text.startswith("feed_mm_rev"))
+    r = run("eccentric", fine, "--machine", lathe, "--program", os.path.join(tmp, "never.nc"),
+            "--cam-table", os.path.join(tmp, "never2.csv"))
+    assert r.returncode == 2 and re.search(rf"fine\.toml:{line}:15: error: --program: 30000 turns", r.stderr), r.stderr
+    assert not os.path.exists(os.path.join(tmp, "never.nc")) and not os.path.exists(os.path.join(tmp, "never2.csv"))
+    # A lead-in of two turns below the program's 0.00001 mm: exit 2 at feed_mm_rev.
+    with open(fine, "w") as f:
+        f.write(good_text.replace("feed_mm_rev = 0.1", "feed_mm_rev = 0.000001").replace("z_end_mm = -30.0",
+                                                                                        "z_end_mm = -0.001"))
+    r = run("eccentric", fine, "--machine", lathe, "--program", os.path.join(tmp, "never.nc"))
+    assert r.returncode == 2 and re.search(rf"fine\.toml:{line}:15: error: --program: two turns", r.stderr), r.stderr
+    assert not os.path.exists(os.path.join(tmp, "never.nc"))
 
     # Fuzz findings: fewer than 3 updates a turn cannot fit a circle (it reported an offset of
     # 1.8e20 um and roundness 0); a speed above the highest within 1 um is an error, not exit 0.

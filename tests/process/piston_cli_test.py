@@ -3,7 +3,10 @@
 peak to valley, better than feedforward, better than nothing); the cam table's rows and header;
 the trace, re-simulated here through the true servo (k = 1, the job's f_n and zeta, exact
 zero-order hold over each row's own interval) from its first row, which must reproduce every
-actual_mm; the SVG plots parse as XML; bad jobs exit 2 with FILE:LINE:COL and write nothing."""
+actual_mm; the SVG plots parse as XML; the --program output read back by `nckit moves` and
+`nckit plan` on the example Fanuc lathe (feed per revolution, X on the middle of the cam table's
+radial range at every station, the cut timed from the spindle speed); bad jobs exit 2 with
+FILE:LINE:COL and write nothing."""
 import csv
 import json
 import math
@@ -16,6 +19,7 @@ import xml.etree.ElementTree as ElementTree
 
 nckit, root = sys.argv[1], sys.argv[2]
 examples = os.path.join(root, "examples/piston")
+lathe = os.path.join(root, "examples/machines/lathe.toml")
 
 CAM_HEADER = ["z_mm", "phi_deg", "radius_mm"]
 TRACE_HEADER = ["t_s", "theta_deg", "z_mm", "radius_mm", "target_mm", "command_mm", "actual_mm", "actual_mm_s"]
@@ -143,6 +147,35 @@ with tempfile.TemporaryDirectory() as tmp:
         assert section.count("<polyline") == 6  # one section per station
         assert open(os.path.join(svg, "drawing.svg")).read().count("<circle") == 2 * 6  # D and E at the stations
 
+    # --program: the slide's path as a Fanuc lathe program, read back on the example lathe
+    # (system A, feed per revolution at power-up). X is the middle of each turn's radial range;
+    # at the stations that is (max + min) / 2 of the cam table's rows, every degree.
+    job = os.path.join(examples, "piston.toml")
+    program, cam = os.path.join(tmp, "piston.nc"), os.path.join(tmp, "program_cam.csv")
+    r = run(job, "--program", program, "--cam-table", cam)
+    assert r.returncode == 0, r.stderr
+    moves = subprocess.run([nckit, "moves", program, "--machine", lathe, "--json"], capture_output=True, text=True)
+    assert moves.returncode == 0 and moves.stderr == "", moves.stderr
+    records = [json.loads(line) for line in moves.stdout.splitlines() if line.strip()]
+    feeds = [m for m in records if m["kind"] == "linear"]
+    assert len(feeds) == 101, len(feeds)  # onto the crown, then every 0.5 mm to Z-50
+    assert all(m["feed_mm_rev"] == 0.1 and abs(m["feed_mm_min"] - 250.0) < 1e-9 for m in feeds), feeds[0]
+    assert feeds[0]["end"]["Z"] == 0.0 and feeds[-1]["end"]["Z"] == -50.0
+    dwells = [m for m in records if m["kind"] == "dwell"]
+    assert len(dwells) == 1 and abs(dwells[0]["seconds"] - 20 * 60 / 2500) < 1e-9, dwells
+    with open(cam) as f:
+        rows = list(csv.reader(f))[1:]
+    slide = {round(-m["end"]["Z"], 6): m["end"]["X"] for m in feeds}  # radius, mm
+    for z in (0, 10, 20, 30, 40, 50):
+        turn = [float(row[2]) for row in rows if float(row[0]) == z]
+        middle = (max(turn) + min(turn)) / 2
+        assert abs(slide[z] - middle) < 2e-5, (z, slide[z], middle)
+    plan = subprocess.run([nckit, "plan", program, "--machine", lathe, "--json"], capture_output=True, text=True)
+    assert plan.returncode == 0, plan.stderr
+    # 51 mm at 0.1 mm/rev x 2500 rpm = 250 mm/min is 12.24 s, with the 0.48 s wait and the rapids.
+    cycle = json.loads(plan.stdout)["cycle_time_s"]
+    assert 12.72 <= cycle <= 16.0, cycle
+
     # The text report names the three runs.
     r = run(os.path.join(examples, "piston.toml"))
     assert r.returncode == 0 and all(k in r.stdout for k in ("uncompensated", "feedforward", "learning")), r.stdout
@@ -178,7 +211,8 @@ with tempfile.TemporaryDirectory() as tmp:
         with open(bad, "w") as f:
             f.write(content)
         out = os.path.join(tmp, "never")
-        r = run(bad, "--json", "--svg-dir", out + "_svg", "--cam-table", out + ".csv", "--trace", out + "_trace.csv")
+        r = run(bad, "--json", "--svg-dir", out + "_svg", "--cam-table", out + ".csv", "--trace", out + "_trace.csv",
+                "--program", out + ".nc")
         assert r.returncode == 2, (name, r.returncode, r.stdout)
         assert re.search(message, r.stderr), (name, r.stderr)
         assert r.stdout == "", r.stdout

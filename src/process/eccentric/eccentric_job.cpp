@@ -32,6 +32,7 @@ void read_eccentric(const toml::table& table, EccentricJob& job, ConfigSink& sin
     reader.number_into("model_error", Need::optional, Sign::any, job.model_error);
     job.rpm_at = sink.at(reader.region_of("rpm"));
     job.radius_at = sink.at(reader.region_of("eccentric_radius_mm"));
+    job.feed_at = sink.at(reader.region_of("feed_mm_rev"));
     reader.reject_unknown_keys();
 
     const double e = job.eccentricity_mm;

@@ -28,6 +28,7 @@ struct EccentricJob {
     double model_error = 0;     //!< the controller's X servo model off by this fraction in frequency and damping
     SourceLocation rpm_at;      //!< where speed problems point
     SourceLocation radius_at;   //!< where geometry problems point
+    SourceLocation feed_at;     //!< where length problems point (the program's size)
 };
 
 [[nodiscard]] Result<EccentricJob> load_eccentric_job(const std::filesystem::path& path);
