@@ -127,5 +127,26 @@ TEST(NgcCutterComp, LineTooShortForAnInsideCornerIsAGougeAtTheBlockThatSettlesIt
     EXPECT_EQ(d.code, "cutter-gouge");
 }
 
+TEST(NgcCutterComp, ToolChangeAfterG40LeavesTheToolBesideTheContour) {
+    // LinuxCNC reads the position back from the machine after M6: the move after G40 then starts
+    // where the tool stands, r beside the contour, and keeps its Y (rs274: Z5 to (10, 2, 5), X20
+    // to (20, 2, 5)); without the tool change it returns to the programmed Y 0.
+    MachineConfig machine = linuxcnc_mill();
+    ToolEntry tool;
+    tool.number = 1;
+    tool.radius_mm = 1.5875;
+    machine.tools.insert(tool);
+    const std::string with_m6 =
+        "G21 G17 G90\nF100\nG0 X0 Y-10\nG41.1 D4\nG1 X0 Y0\nG1 X10 Y0\nG40\nT1 M6\nG0 Z5\nG0 X20\nM2\n";
+    expect_moves(
+        moves_of(with_m6, machine),
+        {line_to(0, -10), line_to(-2, 0), arc_to(0, 2, 0, 0, -1), line_to(10, 2), line_to(10, 2), line_to(20, 2)}, 1.0);
+    std::string without = with_m6;
+    without.erase(without.find("T1 M6\n"), 6);
+    expect_moves(
+        moves_of(without, machine),
+        {line_to(0, -10), line_to(-2, 0), arc_to(0, 2, 0, 0, -1), line_to(10, 2), line_to(10, 0), line_to(20, 0)}, 1.0);
+}
+
 }  // namespace
 }  // namespace nckit::test
