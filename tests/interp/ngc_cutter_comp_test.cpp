@@ -80,6 +80,24 @@ TEST(NgcCutterComp, ArcToLineInsideCornerTakesLinuxCncsCrossing) {
         1.0);
 }
 
+TEST(NgcCutterComp, ArcToArcInsideCornerReadsTheRadiiAtTheArcsEnds) {
+    // From LinuxCNC's inside-corners test (G20, radius 0.075 in on the left): the G2 of line 8
+    // has radius 0.6093 in at its start and 0.609384 at its end. LinuxCNC crosses its offset
+    // circle taken at the end radius with the G3's taken at that arc's compensated end:
+    // (1.2235, 1.0250) in; from the start radius the crossing would round to (1.2235, 1.0252).
+    const auto moves = moves_of(
+        "G20 G17 G90 G94\nF8\nG0 X0 Y0\nG41.1 D0.15\nG1 X0.6767 Y0.2334\nG1 X0.3359 Y0.4419\n"
+        "G3 X1.2281 Y1.3456 I0.2921 J0.6039\nG2 X0.1253 Y0.9881 I-0.6093 J0.0000\n"
+        "G3 X0.7669 Y1.4548 I0.2437 J0.3394\nG40\nG1 X1 Y0\nM2\n",
+        linuxcnc_mill());
+    expect_moves(
+        moves,
+        {line_to(0, 0), line_to(0.5019, 0.2524), line_to(0.2968, 0.3779), arc_to(0.3686, 0.5094, 0.3359, 0.4419, -1),
+         arc_to(1.2235, 1.0250, 0.6280, 1.0458, 1), arc_to(0.0646, 0.9441, 0.6188, 1.3456, -1),
+         arc_to(0.1690, 1.0490, 0.1253, 0.9881, -1), arc_to(0.6955, 1.4319, 0.3690, 1.3275, 1), line_to(1, 0)},
+        25.4);
+}
+
 TEST(NgcCutterComp, ArcOfTheToolsRadiusFromInsideIsAnArcOfRadiusZero) {
     // LinuxCNC's useful-subroutines hole: a 1/8 in tool (T1) in a hole of 1/8 in. The tool stays
     // on the hole's centre; rs274 prints each helix as an arc of radius 0 about it going down
