@@ -2,7 +2,7 @@
 """Run one NC program through LinuxCNC 2.9's trajectory planner, headless, and report what it did.
 
 Usage: bench/linuxcnc_planner.py --max-velocity MM_S --max-acceleration MM_S2 --program FILE
-                                 [--keep DIR] [--timeout S]
+                                 [--keep DIR] [--timeout S] [--tool-length MM]
 
 Generates a simulated XYZ trivkins machine in a temporary folder (the same max velocity and max
 acceleration on every axis, [TRAJ] limits equal to them, travel +-1000 mm, 1 ms servo period, no
@@ -59,8 +59,9 @@ def fail(msg):
 # Configuration files
 # ---------------------------------------------------------------------------------------------
 
-def write_config(work, vmax, amax, display_cmd):
-    """Writes sim.ini, sampler.hal, tool.tbl into `work`; returns the INI path."""
+def write_config(work, vmax, amax, display_cmd, tool_length_mm=0.0):
+    """Writes sim.ini, sampler.hal, tool.tbl (T1: 6 mm, `tool_length_mm` long) into `work`;
+    returns the INI path."""
     joints = []
     axes = []
     for i, name in enumerate(AXES):
@@ -154,7 +155,7 @@ JOINTS = 3
         f.write("# One row per servo period: positions, velocities, accelerations of X Y Z.\n"
                 + "\n".join(lines) + "\n")
     with open(os.path.join(work, "tool.tbl"), "w") as f:
-        f.write("T1 P1 D6.0 Z0.0 ;6 mm end mill\n")
+        f.write(f"T1 P1 D6.0 Z{tool_length_mm} ;6 mm end mill\n")
     with open(os.path.join(work, "sim.var"), "w") as f:
         f.write("")
     return ini_path
@@ -462,7 +463,7 @@ def parent_main(args):
             f.write("#!/bin/sh\n# LinuxCNC DISPLAY: the --display mode of linuxcnc_planner.py\n"
                     f"exec /usr/bin/python3 '{os.path.abspath(__file__)}' --display \"$@\"\n")
         os.chmod(display, 0o755)
-        ini = write_config(work, args.max_velocity, args.max_acceleration, display)
+        ini = write_config(work, args.max_velocity, args.max_acceleration, display, args.tool_length)
         with open(os.path.join(work, "run.json"), "w") as f:
             json.dump({"program": local_program,
                        "run_timeout_s": max(10.0, args.timeout - 30.0)}, f)
@@ -551,6 +552,8 @@ def main():
     ap.add_argument("--max-acceleration", type=float, required=True, help="mm/s^2, every axis")
     ap.add_argument("--program", required=True, help="NC program (LinuxCNC dialect)")
     ap.add_argument("--keep", metavar="DIR", help="copy the generated config, log and samples here")
+    ap.add_argument("--tool-length", type=float, default=0.0,
+                    help="length of tool T1 in the tool table, mm (default 0)")
     ap.add_argument("--timeout", type=float, default=900.0,
                     help="seconds for the whole LinuxCNC run (default 900)")
     ap.add_argument("--pretty", action="store_true", help="indent the JSON")

@@ -43,6 +43,7 @@ void CutterCompensator::start(CompSide side, double radius_mm, Plane plane, cons
     held_start_up_ = false;
     held_restart_ = false;
     has_before_ = false;
+    endpoint_valid_ = false;
     pending_radius_mm_.reset();
     pending_restart_ = false;
 }
@@ -152,6 +153,10 @@ std::optional<CompError> CutterCompensator::start_up(Move move, std::vector<Move
     if (leave_from_tool_) line.from = tool_;  // the geometry stays the programmed one, as LinuxCNC
     leave_from_tool_ = false;
     tool_ = line.to;
+    // LinuxCNC checks the start-up move later against its start and the direction square to it.
+    endpoint_ = from;
+    endpoint_valid_ = true;
+    held_direction_ = normal;
     held_.clear();
     held_.push_back(std::move(move));
     held_start_up_ = true;
@@ -199,6 +204,12 @@ std::optional<CompError> CutterCompensator::check_held(const SourceLocation& nex
 
 std::optional<CompError> CutterCompensator::release(std::vector<Move>& out) {
     if (held_.empty()) return std::nullopt;
+    if (linuxcnc_) {
+        // LinuxCNC settles the held move where it is, with its checks, and forgets its start.
+        auto e = settle_linuxcnc(in_plane(tool_, plane_axes(plane_)), SourceLocation{}, out);
+        endpoint_valid_ = false;
+        return e;
+    }
     if (auto e = check_held(SourceLocation{})) return e;
     if (has_before_ && !held_start_up_) {
         if (auto e = check_clearance(before_.segment(), held_.front().where, "the block before it")) return e;
@@ -237,6 +248,12 @@ std::optional<CompError> CutterCompensator::cancel(std::vector<Move>& out) {
     if (auto e = release(out)) return e;
     mode_ = Mode::exiting;
     return std::nullopt;
+}
+
+std::optional<AxisVector> CutterCompensator::take_exit_position() {
+    if (mode_ != Mode::exiting) return std::nullopt;
+    mode_ = Mode::off;
+    return tool_ + tip_shift_;
 }
 
 std::optional<CompError> CutterCompensator::finish(std::vector<Move>& out) {

@@ -60,6 +60,7 @@ std::optional<CompError> CutterCompensator::start_up_on_arc(Move move) {
     held_start_up_ = false;  // held as a contour arc: the next corner settles its end
     held_restart_ = false;
     has_before_ = false;
+    endpoint_valid_ = false;  // LinuxCNC does not check a start-up arc at its first corner
     held_from_radius_mm_ = radius_mm_;
     mode_ = Mode::on;
     return std::nullopt;

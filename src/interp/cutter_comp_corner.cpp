@@ -128,6 +128,7 @@ CutterCompensator::Programmed CutterCompensator::Programmed::straight(Vec2 start
 }
 
 std::optional<CompError> CutterCompensator::next_planar(Move move, std::vector<Move>& out) {
+    if (linuxcnc_) return next_planar_linuxcnc(std::move(move), out);
     PlaneAxes p = plane_axes(plane_);
     const Segment a = programmed_.segment();
     Segment b = segment_of(move, p);

@@ -184,6 +184,7 @@ std::optional<Diagnostic> Executor::compensate(std::vector<Move>& out, std::size
     std::vector<Move> block_moves(std::make_move_iterator(out.begin() + static_cast<std::ptrdiff_t>(first)),
                                   std::make_move_iterator(out.end()));
     out.resize(first);
+    comp_.set_inch_units(inch_units());
     if (code == g(40)) {
         modal_.cutter_comp = 0;
         if (auto e = comp_.cancel(out)) return to_diagnostic(*e);

@@ -129,6 +129,11 @@ std::optional<Diagnostic> Executor::change_tool(std::vector<Move>& out) {
         if (auto e = straight(g(0), target, out)) return e;
     }
     modal_.tool.in_spindle = modal_.tool.selected;
+    // LinuxCNC takes the position back from the machine after a tool change: after G40, the
+    // tool stands beside the contour, and the next move starts there, not on the contour.
+    if (machine_.dialect == Dialect::linuxcnc) {
+        if (auto at = comp_.take_exit_position()) set_position(*at);
+    }
     return std::nullopt;
 }
 

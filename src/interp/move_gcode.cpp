@@ -155,6 +155,15 @@ void GcodeWriter::append(std::string& out, const Move& move) {
                 if (!m.rapid) append_feed(out, m.feed);
             } else if constexpr (std::is_same_v<T, Arc>) {
                 append_path(out, m.path);
+                const PlaneAxes in = plane_axes(m.plane);
+                if (m.center[in.first] == m.from[in.first] && m.center[in.second] == m.from[in.second]) {
+                    // An arc of radius 0 (LinuxCNC's compensation on a hole of the tool's size) is
+                    // the straight line it is in space; as an arc no reader would take it back.
+                    out += "G1";
+                    append_axes(out, m.to);
+                    append_feed(out, m.feed);
+                    return;
+                }
                 if (m.plane != plane_) {
                     out += plane_code(m.plane);
                     out += ' ';

@@ -9,6 +9,9 @@ both sides:
 - standalone rs274 reads tool-table lengths and diameters as inches whatever the program's
   units, so it gets a copy with every length and diameter divided by 25.4.
 
+`--dialect linuxcnc` runs nckit in that dialect (its own corner construction and checks, which
+must give rs274's moves on these programs too); the default is nckit's default, Fanuc.
+
 Exit status: 0 when every program matches, 1 otherwise.
 """
 
@@ -56,14 +59,21 @@ def main() -> int:
         copy = inch_copy(table, Path(workdir)) if table is not None else tool_table
         return run_rs274(rs274, program, block_delete, workdir, timeout, copy)
 
+    argv = sys.argv[1:]
+    dialect = []
+    if "--dialect" in argv:
+        at = argv.index("--dialect")
+        dialect = ["--dialect", argv[at + 1]]
+        del argv[at:at + 2]
+
     def nckit_with_table(nckit, program, setup, workdir, timeout, extra=None):
         table = table_of(Path(program))
         tools = ["--tools", str(table)] if table is not None else []
-        return run_nckit(nckit, program, setup, workdir, timeout, [*tools, *(extra or [])])
+        return run_nckit(nckit, program, setup, workdir, timeout, [*tools, *dialect, *(extra or [])])
 
     cl.run_rs274 = rs274_with_table
     cl.run_nckit = nckit_with_table
-    sys.argv = [sys.argv[0], "--programs", str(HERE), *sys.argv[1:]]
+    sys.argv = [sys.argv[0], "--programs", str(HERE), *argv]
     return cl.main()
 
 

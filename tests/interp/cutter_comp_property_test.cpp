@@ -189,9 +189,10 @@ struct Outcome {
     bool failed = false;
 };
 
-//! Runs the contour twice around with the tool on `side`, entering from the origin or from far out.
-Outcome run(const std::vector<Element>& c, CompSide side, double r, P2 entry) {
-    CutterCompensator comp;
+//! Runs the contour twice around with the tool on `side`, entering from the origin or from far out;
+//! `linuxcnc`: with the LinuxCNC dialect's corners.
+Outcome run(const std::vector<Element>& c, CompSide side, double r, P2 entry, bool linuxcnc = false) {
+    CutterCompensator comp(CompStartup::type_b, linuxcnc);
     Outcome o;
     std::uint32_t line = 1;
     auto add = [&](Move m) {
@@ -208,7 +209,9 @@ Outcome run(const std::vector<Element>& c, CompSide side, double r, P2 entry) {
     return o;
 }
 
-void check(const std::vector<Element>& c, const Outcome& o, double r, const std::string& what) {
+//! `gouge`: also check that nothing comes closer than r to the element or its neighbours (the
+//! LinuxCNC dialect checks the corner only, as LinuxCNC: a contour may gouge beyond it).
+void check(const std::vector<Element>& c, const Outcome& o, double r, const std::string& what, bool gouge = true) {
     const std::size_t n = c.size();
     P2 previous_end = xy(std::get<Line>(o.moves.front().what).from);
     std::vector<std::vector<P2>> element_end(2, std::vector<P2>(n));
@@ -237,6 +240,7 @@ void check(const std::vector<Element>& c, const Outcome& o, double r, const std:
                 ASSERT_NEAR(off, r, exact_mm) << what << " line " << line;
             }
             for (std::size_t j : {(k + n - 1) % n, k, (k + 1) % n}) {
+                if (!gouge) break;
                 // The last element ends at G40 perpendicular to itself: the contour does not go
                 // on into element 0 there, the exit move does.
                 if (line == 1 + 2 * n && j == (k + 1) % n) continue;
@@ -281,6 +285,44 @@ TEST(CutterCompProperty, StarsAndInsideCutsAreExactOrRefused) {
         }
         ++checked;
         check(c, o, r, "trial " + std::to_string(trial));
+    }
+    EXPECT_GT(checked, 100);
+    EXPECT_GT(refused, 5) << "large tools in small inside corners must be refused";
+}
+
+// The LinuxCNC dialect builds its corners by LinuxCNC's formulas: the same invariants hold
+// (continuous, exactly r from each element, closed), and a convex contour cut from outside
+// neither fails nor gouges.
+TEST(CutterCompProperty, LinuxCncCornersConvexOutsideAreExactAndNeverFail) {
+    std::mt19937 rng(11);
+    int checked = 0;
+    for (int trial = 0; trial < 300; ++trial) {
+        std::vector<Element> c = contour(rng, 40, 0.95, trial % 2 == 1);
+        if (!convex(c)) continue;
+        ++checked;
+        double r = 0.5 + 6.0 * (trial % 7) / 7.0;
+        Outcome o = run(c, CompSide::right, r, {200, 200}, true);
+        ASSERT_FALSE(o.failed) << "trial " << trial;
+        check(c, o, r, "trial " + std::to_string(trial));
+    }
+    EXPECT_GT(checked, 100);
+}
+
+TEST(CutterCompProperty, LinuxCncCornersOfStarsAndInsideCutsAreExactOrRefused) {
+    std::mt19937 rng(29);
+    int checked = 0;
+    int refused = 0;
+    for (int trial = 0; trial < 600; ++trial) {
+        std::vector<Element> c = contour(rng, 40, 0.4, trial % 3 != 0);
+        double r = 0.5 + 8.0 * (trial % 9) / 9.0;
+        CompSide side = trial % 2 == 0 ? CompSide::left : CompSide::right;
+        Outcome o = run(c, side, r, side == CompSide::left ? P2{0, 0} : P2{200, 200}, true);
+        if (o.failed) {
+            ++refused;
+            continue;
+        }
+        ++checked;
+        check(c, o, r, "trial " + std::to_string(trial), false);
     }
     EXPECT_GT(checked, 100);
     EXPECT_GT(refused, 5) << "large tools in small inside corners must be refused";

@@ -40,5 +40,18 @@ TEST(GcodeWriter, ArcsCarryTheirPlaneAndIncrementalCentre) {
               "M30\n");
 }
 
+TEST(GcodeWriter, ArcOfRadiusZeroIsWrittenAsTheLineItIs) {
+    // LinuxCNC's compensation in a hole of the tool's diameter leaves the tool on the centre: an
+    // arc of radius 0 going down in Z, which no reader takes as an arc (zero radius): a G1.
+    MachineConfig machine = default_mill();
+    machine.dialect = Dialect::linuxcnc;
+    EXPECT_EQ(expanded("G0 X14 Y2\nG41.1 D4 G1 X10 Y2 F100\nG3 X10 Y2 I0 J-2 Z-1\nG40 G0 X20\nM2\n", machine),
+              "G0 X14.0 Y2.0 Z0.0 (test.ngc:1)\n"
+              "G1 X10.0 Y0.0 Z0.0 F100.0 (test.ngc:2)\n"
+              "G1 X10.0 Y0.0 Z-1.0 (test.ngc:3)\n"
+              "G0 X20.0 Y2.0 Z-1.0 (test.ngc:4)\n"
+              "M2 (test.ngc:5)\n");
+}
+
 }  // namespace
 }  // namespace nckit::test

@@ -112,6 +112,26 @@ TEST(PathSegment, HelixWithFullTurns) {
     expect_derivatives_match(g);
 }
 
+TEST(PathSegment, HelixOfRadiusZeroIsItsStraightLine) {
+    // LinuxCNC's cutter compensation leaves the tool on the centre of a hole of its own diameter:
+    // a helix of radius 0, which in space is the plunge along its axis.
+    Arc arc;
+    arc.plane = Plane::xy;
+    arc.direction = ArcDirection::counterclockwise;
+    arc.from = point(2, 3, 0.254);
+    arc.center = point(2, 3, 0.254);
+    arc.to = point(2, 3, -1.27);
+    const PathSegment g = make_arc(arc);
+    EXPECT_EQ(g.shape, SegmentShape::line);
+    EXPECT_NEAR(g.length, 1.524, 1e-12);
+    for (std::size_t i = 0; i < axis_count; ++i) EXPECT_NEAR(end_point(g)[i], arc.to[i], 1e-12) << i;
+    expect_derivatives_match(g);
+    // The full circle of radius 0 at depth goes nowhere.
+    arc.from = arc.to;
+    arc.center = arc.to;
+    EXPECT_EQ(make_arc(arc).length, 0.0);
+}
+
 TEST(PathSegment, BlendIsTangentAndWithinTolerance) {
     for (double turn_deg : {0.01, 1.0, 30.0, 90.0, 150.0, 179.0}) {
         const double phi = turn_deg * std::numbers::pi / 180;

@@ -241,6 +241,27 @@ TEST(Planner, StreamingEmitsFinalPiecesBeforeTheEnd) {
     EXPECT_GE(before_finish, whole.pieces.size() * 3 / 4);  // all but the last run
 }
 
+TEST(Planner, HelixOfRadiusZeroRunsAsItsPlunge) {
+    // An arc whose centre is its start and end in the plane (LinuxCNC's compensated hole of the
+    // tool's diameter): the plunge runs at the feed along Z, the full circle of radius 0 after it
+    // makes no motion, and the trajectory's checks (limits, continuity, end state) hold.
+    for (ProfileKind kind : {ProfileKind::trapezoid, ProfileKind::scurve}) {
+        MachineConfig m = plan_test::test_machine(kind);
+        MoveBuilder b;
+        b.line(xyz(10, 0, 0), 600);
+        b.arc(xyz(10, 0, -2), xyz(10, 0, 0), ArcDirection::counterclockwise, 600);
+        b.arc(xyz(10, 0, -2), xyz(10, 0, -2), ArcDirection::counterclockwise, 600);
+        b.line(xyz(20, 0, -2), 600);
+        const Planned p = plan_and_check(b, m);
+        double plunge_s = 0;
+        for (const TrajectoryPiece& piece : p.pieces) {
+            if (piece.sequence_number == 1) plunge_s += piece.duration_s;
+            EXPECT_NE(piece.sequence_number, 2) << "the circle of radius 0 moves nothing";
+        }
+        EXPECT_GT(plunge_s, 2.0 / 10.0);  // 2 mm at 10 mm/s, with its acceleration
+    }
+}
+
 TEST(Planner, ReportsMovesWithoutFeed) {
     MachineConfig m = plan_test::test_machine();
     MoveBuilder b;

@@ -31,7 +31,8 @@ struct CompError {
 class CutterCompensator {
 public:
     //! `linuxcnc`: LinuxCNC's rules (docs/gcode-linuxcnc.md): a start-up move one radius long
-    //! runs, a start-up on an arc runs, and no clearance check beyond the corner.
+    //! runs, a start-up on an arc runs, its corners (cutter_comp_linuxcnc.cpp) and its gouge
+    //! checks, none beyond the corner.
     explicit CutterCompensator(CompStartup startup = CompStartup::type_b, bool linuxcnc = false)
         : startup_(startup), linuxcnc_(linuxcnc) {}
 
@@ -39,6 +40,8 @@ public:
     [[nodiscard]] bool engaged() const { return mode_ != Mode::off; }
     //! G41/G42 is in effect (from the G41/G42 block to the G40 block).
     [[nodiscard]] bool on() const { return mode_ == Mode::waiting || mode_ == Mode::on; }
+    //! The program's length units (G20/G21): LinuxCNC's gouge tolerances depend on them.
+    void set_inch_units(bool inch) { inch_ = inch; }
 
     //! G41/G42 with radius r (> 0, mm): the next move in `plane` starts the compensation.
     //! `tip_shift` (a lathe tool's imaginary tip less its nose centre, mm) moves the compensated
@@ -56,6 +59,11 @@ public:
     [[nodiscard]] std::optional<CompError> cancel(std::vector<Move>& out);
     //! One programmed move (or event): what is settled is appended to `out`.
     [[nodiscard]] std::optional<CompError> add(Move move, std::vector<Move>& out);
+    //! LinuxCNC reads the machine's position back after a tool change: when the move after G40
+    //! is still to come, the tool stays where the compensated path left it and that move runs
+    //! from there as an ordinary one. Returns where the tool is then (nothing when no exit move
+    //! waits), and no exit move waits any more.
+    [[nodiscard]] std::optional<AxisVector> take_exit_position();
     //! End of program: as G40, then nothing is left waiting for an exit move.
     [[nodiscard]] std::optional<CompError> finish(std::vector<Move>& out);
 
@@ -82,6 +90,20 @@ private:
     //! LinuxCNC's start-up on an arc (cutter_comp_arc_entry.cpp).
     std::optional<CompError> start_up_on_arc(Move move);
     std::optional<CompError> next_planar(Move move, std::vector<Move>& out);
+    //! next_planar() in the LinuxCNC dialect: its corners, its gouge checks (cutter_comp_linuxcnc.cpp).
+    std::optional<CompError> next_planar_linuxcnc(Move move, std::vector<Move>& out);
+    std::optional<CompError> next_line_linuxcnc(Move move, std::vector<Move>& out);
+    std::optional<CompError> next_arc_linuxcnc(Move move, std::vector<Move>& out);
+    //! The held moves end at `to` in the plane and go out, after LinuxCNC's checks that the held
+    //! move still runs forward; `where` is the block that settles it.
+    std::optional<CompError> settle_linuxcnc(Vec2 to, const SourceLocation& where, std::vector<Move>& out);
+    //! The held moves go out as they are (a corner that moves no end point).
+    void pass_linuxcnc(std::vector<Move>& out);
+    //! Holds the next planar move, from where the tool is to `end` in the plane.
+    void hold_linuxcnc(Move move, Vec2 end);
+    //! The path around an outside corner at the programmed point `corner`: an arc, or for a
+    //! rapid a straight traverse; it ends at `to` and carries the next block's other axes.
+    void go_around(const Move& next, Vec2 corner, Vec2 to, std::vector<Move>& out);
     //! next_planar() for the first planar move after change_offset() (cutter_comp_change.cpp).
     std::optional<CompError> next_with_new_offset(Move move, std::vector<Move>& out);
     void hold_restarted(Move move);
@@ -113,7 +135,13 @@ private:
     std::optional<double> pending_radius_mm_;  //!< change_offset() waiting for the next planar move
     bool pending_restart_ = false;
     bool leave_from_tool_ = false;  //!< G41/G42 came before the exit move after G40
-    std::vector<Move> held_;        //!< [0]: the held planar move, compensated; then what followed it
+    bool inch_ = false;             //!< G20 is in effect
+    // LinuxCNC dialect: where the held planar move starts, and whether its gouge check applies
+    // (not after a start-up on an arc); a held line's direction as LinuxCNC checks it.
+    Vec2 endpoint_;
+    bool endpoint_valid_ = false;
+    Vec2 held_direction_;
+    std::vector<Move> held_;  //!< [0]: the held planar move, compensated; then what followed it
 };
 
 }  // namespace nckit
