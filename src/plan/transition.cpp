@@ -21,9 +21,12 @@ constexpr int max_attempts = 48;
 constexpr double min_trim_mm = 1e-7;
 // A ramp transition replaces the single quintic only where its turning speed (ramp_transition.hpp)
 // is higher by this factor: the estimate leaves out the path's own acceleration and jerk and the
-// run boundaries its extra quintics add. With no margin the 100 semicircles at j 5,000, where both
-// are held near 20 mm/s by the curvature rate, took 46.677 s instead of 46.441 (1.03: 46.431).
-constexpr double ramp_speed_margin = 1.03;
+// run boundaries its extra quintics add, so a ramp that is barely faster by it is slower in the
+// plan. Measured on the 100 semicircles at j 5,000 (both held near 20 mm/s by the curvature
+// rate): 46.677 s with no margin, 46.364 s with 1.005, 46.431 s with 1.01 to 1.03 (a single
+// quintic everywhere: 46.441 s); 1.03 also gave up the slots' gain at j 50,000 (1.604 -> 1.628 s
+// at F6000).
+constexpr double ramp_speed_margin = 1.005;
 // Chained transitions take an arc-length parameter up to this half turn between their ends.
 constexpr double chained_max_half_turn_rad = 0.5;
 
