@@ -1,5 +1,7 @@
 #include "ramp_transition.hpp"
 
+#include "ramp_model.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -49,132 +51,9 @@ Vec3 unit(const Vec3& a) {
     return n > 0 ? scaled(a, 1.0 / n) : Vec3{};
 }
 
-//! The curve's offset y from the programmed path along the path's normal in the plane, as a
-//! function of the programmed arc length x from the join (x < 0 on `before`): y'' is the
-//! difference Δκ between the curve's curvature and the path's (to first order in y), piecewise
-//! linear in x between knots. The path's curvature steps from ka to kb at 0 and its direction by
-//! kink; the curve's does not, so Δκ steps by ka − kb and y' by −kink there.
-struct Model {
-    double ka = 0, kb = 0, kink = 0;  // 1/mm, 1/mm, rad
-    double ta = 0, tb = 0;            // mm, the trims
-    double ease_a = 0, ease_b = 0;    // mm over which Δκ rises from 0 to its plateau
-    double w = 0;                     // mm, half of the ramp across the join
-    int plateau_a = 1, plateau_b = 1;
-    // Knots (part boundaries) and Δκ there as c + a·da + b·db (da, db: the plateaus' Δκ).
-    std::array<double, 16> x{};
-    std::array<std::array<double, 3>, 16> f{};
-    int knots = 0;
-    int ramp = 0;  // the ramp runs from knot `ramp` to `ramp + 1`
-};
-
-void add_knot(Model& m, double x, double c, double a, double b) {
-    m.x[static_cast<std::size_t>(m.knots)] = x;
-    m.f[static_cast<std::size_t>(m.knots)] = {c, a, b};
-    ++m.knots;
-}
-
-void set_knots(Model& m) {
-    m.knots = 0;
-    add_knot(m, -m.ta, 0, 0, 0);
-    const double plateau_a = m.ta - m.w - m.ease_a;
-    add_knot(m, -m.ta + m.ease_a, 0, 1, 0);
-    if (plateau_a > 1e-9) {
-        for (int k = 1; k <= m.plateau_a; ++k) add_knot(m, -m.ta + m.ease_a + plateau_a * k / m.plateau_a, 0, 1, 0);
-    }
-    m.ramp = m.knots - 1;
-    add_knot(m, m.w, 0, 0, 1);
-    const double plateau_b = m.tb - m.w - m.ease_b;
-    if (plateau_b > 1e-9) {
-        for (int k = 1; k <= m.plateau_b; ++k) add_knot(m, m.w + plateau_b * k / m.plateau_b, 0, 0, 1);
-    }
-    add_knot(m, m.tb, 0, 0, 0);
-}
-
-//! y, y' and Δκ at one x (of a knot, or inside the model).
-struct Offset {
-    double y = 0, slope = 0, dk = 0;
-};
-
-//! The model with plateaus da and db, integrated from −ta: the offset at every knot, and on
-//! request the largest |y| (sampled), the largest |κ| and the largest |dκ/dx| of the curve.
-struct Solved {
-    std::array<Offset, 16> at{};
-    double max_y = 0;
-    double peak_curvature = 0;
-    double peak_rate = 0;
-};
-
-//! One stretch of linear Δκ from fa to fb over h: y and y' advance in closed form.
-void advance(Offset& o, double h, double fa, double fb) {
-    o.y += o.slope * h + h * h * (fa / 3 + fb / 6);
-    o.slope += h * (fa + fb) / 2;
-    o.dk = fb;
-}
-
-void note_span(Solved& s, const Offset& start, double h, double fa, double fb, double k) {
-    for (int q = 1; q <= 8; ++q) {
-        const double u = h * q / 8;
-        const double y = start.y + start.slope * u + fa * u * u / 2 + (fb - fa) * u * u * u / (6 * h);
-        s.max_y = std::max(s.max_y, std::abs(y));
-    }
-    s.peak_curvature = std::max({s.peak_curvature, std::abs(k + fa), std::abs(k + fb)});
-    if (h > 0) s.peak_rate = std::max(s.peak_rate, std::abs(fb - fa) / h);
-}
-
-Solved integrate(const Model& m, double da, double db) {
-    Solved s;
-    auto df = [&](int i) {
-        const auto& c = m.f[static_cast<std::size_t>(i)];
-        return c[0] + c[1] * da + c[2] * db;
-    };
-    Offset o;
-    s.at[0] = o;
-    for (int i = 0; i + 1 < m.knots; ++i) {
-        const double fa = df(i);
-        const double fb = df(i + 1);
-        if (i == m.ramp) {
-            // The curve's curvature runs linearly from ka + da to kb + db; the path's steps at 0.
-            const double mid = 0.5 * (m.ka + da + m.kb + db);
-            Offset start = o;
-            advance(o, m.w, fa, mid - m.ka);
-            note_span(s, start, m.w, fa, mid - m.ka, m.ka);
-            o.slope -= m.kink;
-            start = o;
-            advance(o, m.w, mid - m.kb, fb);
-            note_span(s, start, m.w, mid - m.kb, fb, m.kb);
-            s.peak_rate = std::max(s.peak_rate, std::abs(m.kb + db - m.ka - da) / (2 * m.w));
-        } else {
-            const double h = m.x[static_cast<std::size_t>(i + 1)] - m.x[static_cast<std::size_t>(i)];
-            const Offset start = o;
-            advance(o, h, fa, fb);
-            note_span(s, start, h, fa, fb, i < m.ramp ? m.ka : m.kb);
-        }
-        s.at[static_cast<std::size_t>(i + 1)] = o;
-    }
-    return s;
-}
-
-//! The plateaus that bring the curve back onto the path at tb with its direction: y and y' at
-//! the end are affine in (da, db), a 2×2 system. False when it is singular.
-bool solve(const Model& m, Solved& out, double& da, double& db) {
-    const Solved s0 = integrate(m, 0, 0);
-    const Solved s1 = integrate(m, 1, 0);
-    const Solved s2 = integrate(m, 0, 1);
-    const auto end = static_cast<std::size_t>(m.knots - 1);
-    const double y0 = s0.at[end].y, p0 = s0.at[end].slope;
-    const double ya = s1.at[end].y - y0, pa = s1.at[end].slope - p0;
-    const double yb = s2.at[end].y - y0, pb = s2.at[end].slope - p0;
-    const double det = ya * pb - yb * pa;
-    if (!(std::abs(det) > 1e-300)) return false;
-    da = (-y0 * pb + yb * p0) / det;
-    db = (-ya * p0 + y0 * pa) / det;
-    out = integrate(m, da, db);
-    return std::isfinite(da) && std::isfinite(db);
-}
-
 //! The speed a model allows at constant path speed with the smallest axis limits (its curvature
 //! and curvature rate taken on one axis, as at a join where the normal lies along an axis).
-double model_speed(const Solved& s, double amax, double jmax) {
+double model_speed(const RampSolution& s, double amax, double jmax) {
     const double by_a = s.peak_curvature > 0 ? std::sqrt(amax / s.peak_curvature) : inf;
     const double by_j = s.peak_rate > 0 ? std::cbrt(turning_jerk_share * jmax / s.peak_rate) : inf;
     return std::min(by_a, by_j);
@@ -216,24 +95,9 @@ PathPoint state_at(const PathSegment& g, double s, const Offset& o, const Vec3& 
     return p;
 }
 
-//! Arc length of the offset curve over a stretch of the model, sqrt((1 − κy)² + y'²) by
-//! Simpson's rule.
-double offset_length(const Offset& start, double h, double fa, double fb, double k) {
-    constexpr int steps = 8;
-    auto speed = [&](double u) {
-        const double y = start.y + start.slope * u + fa * u * u / 2 + (fb - fa) * u * u * u / (6 * h);
-        const double slope = start.slope + fa * u + (fb - fa) * u * u / (2 * h);
-        return std::sqrt((1 - k * y) * (1 - k * y) + slope * slope);
-    };
-    const double step = h / steps;
-    double sum = speed(0) + speed(h);
-    for (int q = 1; q < steps; ++q) sum += (q % 2 == 1 ? 4 : 2) * speed(step * q);
-    return sum * step / 3;
-}
-
 //! The chain of quintics for a solved model, written to out (curve, more) and measured.
-bool build_chain(const PathSegment& before, const PathSegment& after, const Model& m, const Solved& s, double da,
-                 double db, const Vec3& normal, double tolerance_mm, Transition& out) {
+bool build_chain(const PathSegment& before, const PathSegment& after, const RampModel& m, const RampSolution& s,
+                 double da, double db, const Vec3& normal, double tolerance_mm, Transition& out) {
     auto state = [&](int i) {
         const double x = m.x[static_cast<std::size_t>(i)];
         if (i == 0) return out.start;
@@ -308,7 +172,7 @@ bool make_ramp_transition(const PathSegment& before, double before_room, const P
     const Vec3 d1b = unit(xyz(st.d1));
     if (std::abs(dot(d1b, plane.normal) - dot(d1a, plane.normal)) > 1e-9) return false;
     if (!flat(before, plane.normal) || !flat(after, plane.normal)) return false;
-    Model m;
+    RampModel m;
     m.ka = dot(k1, plane.n0);
     m.kb = dot(k2, plane.n0);
     m.kink = dot(cross(d1a, d1b), plane.normal);
@@ -336,24 +200,24 @@ bool make_ramp_transition(const PathSegment& before, double before_room, const P
     for (int round = 0; round < max_rounds; ++round) {
         // The candidates: trims (a share of the room) and easing lengths; for each the widest ramp
         // whose model stays within the target, and the one whose model allows the highest speed.
-        Model best;
-        Solved best_solved;
+        RampModel best;
+        RampSolution best_solved;
         double best_da = 0;
         double best_db = 0;
         double best_speed = -1;
         for (double share : {1.0, 0.7, 0.5, 0.35}) {
             for (double ease : {0.35, 1.0}) {
-                Model m2 = m;
+                RampModel m2 = m;
                 m2.ta = share * before_room;
                 if (before.length - m2.ta < min_leftover_mm) m2.ta = before.length;
                 m2.tb = share * after_room;
                 double lo = 0.0;
                 double hi = 0.95 * std::min(m2.ta, m2.tb);
-                Solved found;
+                RampSolution found;
                 double fda = 0;
                 double fdb = 0;
                 bool any = false;
-                auto fits = [&](double w, Solved& s, double& da, double& db) {
+                auto fits = [&](double w, RampSolution& s, double& da, double& db) {
                     m2.w = w;
                     m2.ease_a = ease * (m2.ta - w);
                     m2.ease_b = ease * (m2.tb - w);
@@ -366,7 +230,7 @@ bool make_ramp_transition(const PathSegment& before, double before_room, const P
                     set_knots(m2);
                     return solve(m2, s, da, db) && s.max_y <= target;
                 };
-                Solved s;
+                RampSolution s;
                 double da = 0;
                 double db = 0;
                 if (fits(hi, s, da, db)) {
