@@ -23,7 +23,8 @@ void note_span(RampSolution& s, const Offset& start, double h, double fa, double
     if (h > 0) s.peak_rate = std::max(s.peak_rate, std::abs(fb - fa) / h);
 }
 
-RampSolution integrate(const RampModel& m, double da, double db) {
+//! With `stats`, also the largest |y|, |κ| and |dκ/dx| (the 2×2 system needs only the end).
+RampSolution integrate(const RampModel& m, double da, double db, bool stats) {
     RampSolution s;
     auto df = [&](int i) {
         const auto& c = m.f[static_cast<std::size_t>(i)];
@@ -39,17 +40,17 @@ RampSolution integrate(const RampModel& m, double da, double db) {
             const double mid = 0.5 * (m.ka + da + m.kb + db);
             Offset start = o;
             advance(o, m.w, fa, mid - m.ka);
-            note_span(s, start, m.w, fa, mid - m.ka, m.ka);
+            if (stats) note_span(s, start, m.w, fa, mid - m.ka, m.ka);
             o.slope -= m.kink;
             start = o;
             advance(o, m.w, mid - m.kb, fb);
-            note_span(s, start, m.w, mid - m.kb, fb, m.kb);
+            if (stats) note_span(s, start, m.w, mid - m.kb, fb, m.kb);
             s.peak_rate = std::max(s.peak_rate, std::abs(m.kb + db - m.ka - da) / (2 * m.w));
         } else {
             const double h = m.x[static_cast<std::size_t>(i + 1)] - m.x[static_cast<std::size_t>(i)];
             const Offset start = o;
             advance(o, h, fa, fb);
-            note_span(s, start, h, fa, fb, i < m.ramp ? m.ka : m.kb);
+            if (stats) note_span(s, start, h, fa, fb, i < m.ramp ? m.ka : m.kb);
         }
         s.at[static_cast<std::size_t>(i + 1)] = o;
     }
@@ -82,9 +83,9 @@ void advance(Offset& o, double h, double fa, double fb) {
 }
 
 bool solve(const RampModel& m, RampSolution& out, double& da, double& db) {
-    const RampSolution s0 = integrate(m, 0, 0);
-    const RampSolution s1 = integrate(m, 1, 0);
-    const RampSolution s2 = integrate(m, 0, 1);
+    const RampSolution s0 = integrate(m, 0, 0, false);
+    const RampSolution s1 = integrate(m, 1, 0, false);
+    const RampSolution s2 = integrate(m, 0, 1, false);
     const auto end = static_cast<std::size_t>(m.knots - 1);
     const double y0 = s0.at[end].y, p0 = s0.at[end].slope;
     const double ya = s1.at[end].y - y0, pa = s1.at[end].slope - p0;
@@ -93,7 +94,7 @@ bool solve(const RampModel& m, RampSolution& out, double& da, double& db) {
     if (!(std::abs(det) > 1e-300)) return false;
     da = (-y0 * pb + yb * p0) / det;
     db = (-ya * p0 + y0 * pa) / det;
-    out = integrate(m, da, db);
+    out = integrate(m, da, db, true);
     return std::isfinite(da) && std::isfinite(db);
 }
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 namespace nckit::plan_detail {
 
@@ -110,7 +111,6 @@ bool build_chain(const PathSegment& before, const PathSegment& after, const Ramp
         return c[0] + c[1] * da + c[2] * db;
     };
     out.more.clear();
-    double deviation = 0;
     PathPoint from = state(0);
     for (int i = 0; i + 1 < m.knots; ++i) {
         const PathPoint to = state(i + 1);
@@ -128,9 +128,6 @@ bool build_chain(const PathSegment& before, const PathSegment& after, const Ramp
             length = offset_length(o, h, df(i), df(i + 1), i < m.ramp ? m.ka : m.kb);
         }
         PathSegment piece = make_quintic(from, to, length, AxisVector{});
-        const CurveDeviation d = measure_deviation(piece, out, tolerance_mm);
-        if (!(d.slowest >= 0.3)) return false;
-        deviation = std::max(deviation, d.deviation_mm);
         if (i == 0) {
             out.curve = piece;
         } else {
@@ -138,8 +135,12 @@ bool build_chain(const PathSegment& before, const PathSegment& after, const Ramp
         }
         from = to;
     }
-    out.deviation_mm = deviation;
-    return deviation <= deviation_target * tolerance_mm;
+    // Measured against the replaced path at once (it is cut into chords once).
+    std::vector<PathSegment> curves{out.curve};
+    curves.insert(curves.end(), out.more.begin(), out.more.end());
+    const CurveDeviation d = measure_deviation(curves.data(), curves.size(), out, tolerance_mm);
+    out.deviation_mm = d.deviation_mm;
+    return d.slowest >= 0.3 && d.deviation_mm <= deviation_target * tolerance_mm;
 }
 
 }  // namespace

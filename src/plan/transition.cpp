@@ -65,6 +65,9 @@ double to_piece(const AxisVector& p, const Piece& piece) {
     return best + piece.sagitta;
 }
 
+void measure_into(const PathSegment& curve, const Piece& tail, const Piece& head, double stop_above_mm,
+                  CurveDeviation& out);
+
 }  // namespace
 
 bool smooth_join(const PathSegment& before, const PathSegment& after, double direction_tolerance, bool curvature_too) {
@@ -78,11 +81,27 @@ bool smooth_join(const PathSegment& before, const PathSegment& after, double dir
 }
 
 CurveDeviation measure_deviation(const PathSegment& curve, const Transition& replaced, double stop_above_mm) {
+    return measure_deviation(&curve, 1, replaced, stop_above_mm);
+}
+
+CurveDeviation measure_deviation(const PathSegment* curves, std::size_t count, const Transition& replaced,
+                                 double stop_above_mm) {
     const Piece tail = piece_of(replaced.replaced_before, 0.0, replaced.replaced_before.length);
     const Piece head = piece_of(replaced.replaced_after, 0.0, replaced.replaced_after.length);
-    const double length = curve.length;
     CurveDeviation out;
     out.slowest = 1e300;
+    for (std::size_t c = 0; c < count && out.deviation_mm <= stop_above_mm; ++c) {
+        const PathSegment& curve = curves[c];
+        measure_into(curve, tail, head, stop_above_mm, out);
+    }
+    return out;
+}
+
+namespace {
+
+void measure_into(const PathSegment& curve, const Piece& tail, const Piece& head, double stop_above_mm,
+                  CurveDeviation& out) {
+    const double length = curve.length;
     for (int k = 0; k <= deviation_samples; ++k) {
         // XYZ position and slope only (point_at would do every axis and two more derivatives).
         const double s = length * k / deviation_samples;
@@ -102,8 +121,9 @@ CurveDeviation measure_deviation(const PathSegment& curve, const Transition& rep
         out.slowest = std::min(out.slowest, std::sqrt(speed2));
         if (out.deviation_mm > stop_above_mm) break;
     }
-    return out;
 }
+
+}  // namespace
 
 namespace {
 

@@ -4,6 +4,7 @@
 // and curvature vector, so the axes' velocity and acceleration stay continuous through it at any
 // speed, and that stays within the path tolerance of the programmed path.
 #include <array>
+#include <cstddef>
 #include <optional>
 #include <vector>
 
@@ -96,6 +97,9 @@ struct CurveDeviation {
     double slowest = 0;
 };
 [[nodiscard]] CurveDeviation measure_deviation(const PathSegment& curve, const Transition& replaced,
+                                               double stop_above_mm);
+//! The same over `count` curves (a ramp transition's chain), measured against the path once cut.
+[[nodiscard]] CurveDeviation measure_deviation(const PathSegment* curves, std::size_t count, const Transition& replaced,
                                                double stop_above_mm);
 
 //! Pieces of path left between transitions shorter than this (mm) join the transition.
