@@ -289,9 +289,9 @@ bool split_arc_jerk_limited(const PathSegment& arc, const MachineConfig& machine
 }
 
 bool split_transition_jerk_limited(const PathSegment& curve, const MachineConfig& machine, double feed_mm_s,
-                                   std::vector<ArcPiece>& out) {
+                                   std::vector<ArcPiece>& out, int pieces) {
     if (curve.shape != SegmentShape::quintic || !(curve.length > 0)) return false;
-    return split_jerk_limited(curve, transition_pieces, machine, feed_mm_s, out);
+    return split_jerk_limited(curve, pieces, machine, feed_mm_s, out);
 }
 
 }  // namespace nckit::plan_detail

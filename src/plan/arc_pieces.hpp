@@ -57,7 +57,9 @@ inline constexpr int transition_pieces = 32;
 //! with limits of their own, by the same rule as split_arc_jerk_limited: where it joins arcs
 //! turning opposite ways its curvature runs from one arc's through 0 to the other's, and the
 //! pieces let the speed follow what each part allows instead of the whole curve's worst case.
+//! `pieces` overrides the count (a ramp transition's quintics share the pieces by length).
 [[nodiscard]] bool split_transition_jerk_limited(const PathSegment& curve, const MachineConfig& machine,
-                                                 double feed_mm_s, std::vector<ArcPiece>& out);
+                                                 double feed_mm_s, std::vector<ArcPiece>& out,
+                                                 int pieces = transition_pieces);
 
 }  // namespace nckit::plan_detail

@@ -19,8 +19,15 @@ constexpr double run_margin = 1.0 - 1e-9;
 //! Trapezoid runs merge segments whose limits are equal up to rounding (see joins_last_run).
 constexpr double trapezoid_run_spread = 1.0 + 4e-9;
 
-bool joins(double segment_limit, double run_limit) {
-    return segment_limit >= run_limit && segment_limit <= run_limit * run_spread;
+bool joins(double segment_limit, double run_limit, double spread = run_spread) {
+    return segment_limit >= run_limit && segment_limit <= run_limit * spread;
+}
+bool straight(const WindowSegment& segment) {
+    return segment.path.shape != SegmentShape::arc && !(segment.check.cruise_velocity > 0);
+}
+//! S-curve: the spread of acceleration and jerk limits a segment may share a run with.
+double rate_spread(const WindowRun& run, const WindowSegment& segment) {
+    return run.straight && straight(segment) ? straight_run_rate_spread : run_spread;
 }
 }  // namespace
 
@@ -41,8 +48,10 @@ bool Lookahead::joins_last_run(const WindowSegment& segment) const {
     const bool at_least = l.max_velocity >= run.limits.max_velocity &&
                           l.max_acceleration >= run.limits.max_acceleration && l.max_jerk >= run.limits.max_jerk;
     if (!at_least) return false;
-    if (joins(l.max_velocity, run.limits.max_velocity) && joins(l.max_acceleration, run.limits.max_acceleration) &&
-        (l.max_jerk == run.limits.max_jerk || joins(l.max_jerk, run.limits.max_jerk))) {
+    const double rates = rate_spread(run, segment);
+    if (joins(l.max_velocity, run.limits.max_velocity) &&
+        joins(l.max_acceleration, run.limits.max_acceleration, rates) &&
+        (l.max_jerk == run.limits.max_jerk || joins(l.max_jerk, run.limits.max_jerk, rates))) {
         return true;
     }
     // A faster segment too short to speed up much on its own (e.g. the short lines left between
@@ -60,11 +69,12 @@ bool Lookahead::lowers_last_run(const WindowSegment& segment, ProfileLimits& low
     const ProfileLimits& first = run.first_limits;
     // Within run_spread of the run's first limits both ways, so the run never drifts far below
     // any of its segments.
-    auto near = [](double value, double reference) {
-        return value == reference || (value * run_spread >= reference && value <= reference * run_spread);
+    auto near = [](double value, double reference, double spread) {
+        return value == reference || (value * spread >= reference && value <= reference * spread);
     };
-    if (!near(l.max_velocity, first.max_velocity) || !near(l.max_acceleration, first.max_acceleration) ||
-        !near(l.max_jerk, first.max_jerk)) {
+    const double rates = rate_spread(run, segment);
+    if (!near(l.max_velocity, first.max_velocity, run_spread) ||
+        !near(l.max_acceleration, first.max_acceleration, rates) || !near(l.max_jerk, first.max_jerk, rates)) {
         return false;
     }
     lowered = {std::min(run.limits.max_velocity, l.max_velocity * run_margin),
@@ -108,6 +118,7 @@ void Lookahead::add(WindowSegment segment) {
         run.length += segment.path.length;
         run.junction_max = std::min(segment.junction_max, run.limits.max_velocity);
         run.cruise_velocity = std::min(run.cruise_velocity, segment.check.cruise_velocity);
+        run.straight = run.straight && straight(segment);
         run.stop_speed = -1;
         touch(runs_.size() - 1);
     } else {
@@ -118,6 +129,7 @@ void Lookahead::add(WindowSegment segment) {
                       segment.limits.max_jerk * run_margin};
         run.first_limits = run.limits;
         run.cruise_velocity = segment.check.cruise_velocity;
+        run.straight = straight(segment);
         run.junction_max = std::min(segment.junction_max, run.limits.max_velocity);
         runs_.push_back(run);
         touch(runs_.size() - 1);

@@ -96,6 +96,9 @@ struct WindowRun {
     double junction_max = 0;     //!< mm/s at its end
     //! mm/s, the lowest cruise_velocity of its segments when every one has a PieceCheck, else 0.
     double cruise_velocity = 0;
+    //! Only lines and transitions between lines (no arc, no curved piece): its segments may
+    //! share the run with wider acceleration and jerk limits (straight_run_rate_spread).
+    bool straight = true;
     double bound = 0;  //!< mm/s, from the backward pass: the end speed it can still stop from
     //! The bound no longer depends on the window's provisional stop at its end (see plan()).
     bool bound_final = false;
@@ -106,6 +109,15 @@ struct WindowRun {
 
 //! Runs merge segments whose speed, acceleration and jerk limits are within this factor.
 inline constexpr double run_spread = 1.05;
+//! S-curve runs of lines and transitions between lines (no arc, no curved piece) merge segments
+//! whose acceleration and jerk limits are within this factor (the speed limits still within
+//! run_spread): a run ends with zero path acceleration, and on a CAM chain speeding up from
+//! rest the line and transition limits differ by more than run_spread at every vertex, so the
+//! acceleration had to return to 0 every few tenths of a millimetre. Measured at j 5,000
+//! (BENCHMARKS.md): the 2,000-line circle 3.080 -> 2.917 s, the raster 37.001 -> 36.782 s (1.3
+//! gave 2.997 s on the circle; 2 and 3 the same as 1.5). Among arcs and their pieces it cost
+//! time (semicircles at j 50,000 27.764 -> 27.883 s), so there the spread stays run_spread.
+inline constexpr double straight_run_rate_spread = 1.5;
 
 class Lookahead {
 public:

@@ -5,18 +5,21 @@
 
 namespace nckit::plan_detail {
 
-bool join_by_transition(PendingMotion& p, PendingMotion& next, double tolerance) {
+bool join_by_transition(PendingMotion& p, PendingMotion& next, double tolerance, const TurningLimits* turning) {
     // Built in place: a transition is a large value, and this runs once per move of a chain.
     auto xyz = [](const AxisVector& v) { return std::array<double, 3>{v[0], v[1], v[2]}; };
     ChainStart chain;
-    if (p.entry) {
+    // A chain starts only after a single quintic (a ramp transition's end is not rebuilt).
+    const bool chained_entry = p.entry && p.entry->more.empty();
+    if (chained_entry) {
         chain.entry_length = p.entry->curve.length;
         chain.entry_start_d1 = xyz(p.entry->start.d1);
     }
     const double before_room = 0.5 * p.full_length;
     const double after_room = 0.5 * next.path.length;
     auto& t = next.entry.emplace();
-    if (!make_transition(p.path, before_room, next.path, after_room, tolerance, t, p.entry ? &chain : nullptr)) {
+    if (!make_transition(p.path, before_room, next.path, after_room, tolerance, t, chained_entry ? &chain : nullptr,
+                         turning)) {
         next.entry.reset();
         return false;
     }
@@ -28,7 +31,7 @@ bool join_by_transition(PendingMotion& p, PendingMotion& next, double tolerance)
                                            xyz(t.start.d2), tolerance);
         if (entry) {
             apply(*p.entry, *entry);
-        } else if (!make_transition(p.path, before_room, next.path, after_room, tolerance, t)) {
+        } else if (!make_transition(p.path, before_room, next.path, after_room, tolerance, t, nullptr, turning)) {
             next.entry.reset();
             return false;
         }

@@ -37,7 +37,9 @@ struct PendingMotion {
 //! side giving at most half its programmed length: on success p's end and next's start are
 //! trimmed and the transition becomes next.entry (fed at the lower of the two feeds, located at
 //! p); p is then ready to be released. False, with both untouched, when no transition keeps the
-//! tolerance.
-[[nodiscard]] bool join_by_transition(PendingMotion& p, PendingMotion& next, double tolerance);
+//! tolerance. With `turning` (jerk-limited plans) a tangent join of an arc may get a ramp
+//! transition (make_transition).
+[[nodiscard]] bool join_by_transition(PendingMotion& p, PendingMotion& next, double tolerance,
+                                      const TurningLimits* turning = nullptr);
 
 }  // namespace nckit::plan_detail

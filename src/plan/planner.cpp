@@ -45,16 +45,28 @@ struct Planner::Impl {
     bool have_position = false;               //!< a motion has told where the machine is
     std::vector<WindowEvent> leading_events;  //!< events before the first motion: place unknown
     Diagnostics diagnostics;
-    SpindleCommand spindle;             //!< the spindle as the moves pushed so far leave it
-    bool last_motion_sync = false;      //!< the last motion was G32/G33: a thread goes on at speed
-    plan_detail::ChainSmoother chains;  //!< S-curve: CAM polylines smoothed within G64 P
+    SpindleCommand spindle;              //!< the spindle as the moves pushed so far leave it
+    bool last_motion_sync = false;       //!< the last motion was G32/G33: a thread goes on at speed
+    plan_detail::ChainSmoother chains;   //!< S-curve: CAM polylines smoothed within G64 P
+    plan_detail::TurningLimits turning;  //!< X, Y, Z limits, for choosing a transition's shape
 
     Impl(MachineConfig m, PlannerOptions o)
         : machine(std::move(m)),
           options(o),
           kind(o.profile.value_or(machine.profile)),
           lookahead(kind, o.window_moves, machine.spindle),
-          window_feed(machine, kind, lookahead) {}
+          window_feed(machine, kind, lookahead) {
+        // An axis the machine lacks cannot move (check_axes), so it limits nothing.
+        turning.max_acceleration.fill(std::numeric_limits<double>::infinity());
+        turning.max_jerk.fill(std::numeric_limits<double>::infinity());
+        for (const AxisConfig& axis : machine.axes) {
+            const std::size_t i = index(axis.axis);
+            if (i < 3) {
+                turning.max_acceleration[i] = axis.max_acceleration;
+                turning.max_jerk[i] = axis.max_jerk;
+            }
+        }
+    }
 
     //! The pending motion goes to the window, ending at rest when `stop`, else at most at its own
     //! speed limit (the next segment's lowers it further). An arc whose curvature sets its speed
@@ -134,7 +146,8 @@ struct Planner::Impl {
     //! Any other corner, and every join with a jump in curvature under a jerk limit: a quintic
     //! transition within the tolerance (pending_motion.hpp).
     bool transition(Pending& p, Pending& next, double tolerance) {
-        if (!plan_detail::join_by_transition(p, next, tolerance)) return false;
+        const plan_detail::TurningLimits* limits = kind == ProfileKind::scurve ? &turning : nullptr;
+        if (!plan_detail::join_by_transition(p, next, tolerance, limits)) return false;
         release_pending(false);
         return true;
     }

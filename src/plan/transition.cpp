@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "chord_distance.hpp"
+#include "ramp_transition.hpp"
 
 namespace nckit::plan_detail {
 
@@ -17,6 +19,14 @@ constexpr double deviation_target = 0.95;
 constexpr double min_parametric_speed = 0.3;
 constexpr int max_attempts = 48;
 constexpr double min_trim_mm = 1e-7;
+// A ramp transition replaces the single quintic only where its turning speed (ramp_transition.hpp)
+// is higher by this factor: the estimate leaves out the path's own acceleration and jerk and the
+// run boundaries its extra quintics add, so a ramp that is barely faster by it is slower in the
+// plan. Measured on the 100 semicircles at j 5,000 (both held near 20 mm/s by the curvature
+// rate): 46.677 s with no margin, 46.364 s with 1.005, 46.431 s with 1.01 to 1.03 (a single
+// quintic everywhere: 46.441 s); 1.03 also gave up the slots' gain at j 50,000 (1.604 -> 1.628 s
+// at F6000).
+constexpr double ramp_speed_margin = 1.005;
 // Chained transitions take an arc-length parameter up to this half turn between their ends.
 constexpr double chained_max_half_turn_rad = 0.5;
 
@@ -55,6 +65,9 @@ double to_piece(const AxisVector& p, const Piece& piece) {
     return best + piece.sagitta;
 }
 
+void measure_into(const PathSegment& curve, const Piece& tail, const Piece& head, double stop_above_mm,
+                  CurveDeviation& out);
+
 }  // namespace
 
 bool smooth_join(const PathSegment& before, const PathSegment& after, double direction_tolerance, bool curvature_too) {
@@ -66,6 +79,51 @@ bool smooth_join(const PathSegment& before, const PathSegment& after, double dir
     }
     return true;
 }
+
+CurveDeviation measure_deviation(const PathSegment& curve, const Transition& replaced, double stop_above_mm) {
+    return measure_deviation(&curve, 1, replaced, stop_above_mm);
+}
+
+CurveDeviation measure_deviation(const PathSegment* curves, std::size_t count, const Transition& replaced,
+                                 double stop_above_mm) {
+    const Piece tail = piece_of(replaced.replaced_before, 0.0, replaced.replaced_before.length);
+    const Piece head = piece_of(replaced.replaced_after, 0.0, replaced.replaced_after.length);
+    CurveDeviation out;
+    out.slowest = 1e300;
+    for (std::size_t c = 0; c < count && out.deviation_mm <= stop_above_mm; ++c) {
+        const PathSegment& curve = curves[c];
+        measure_into(curve, tail, head, stop_above_mm, out);
+    }
+    return out;
+}
+
+namespace {
+
+void measure_into(const PathSegment& curve, const Piece& tail, const Piece& head, double stop_above_mm,
+                  CurveDeviation& out) {
+    const double length = curve.length;
+    for (int k = 0; k <= deviation_samples; ++k) {
+        // XYZ position and slope only (point_at would do every axis and two more derivatives).
+        const double s = length * k / deviation_samples;
+        AxisVector q;
+        double speed2 = 0;
+        for (std::size_t i = 0; i < 3; ++i) {
+            const double c1 = curve.rate[i];
+            const double c2 = curve.poly[0][i];
+            const double c3 = curve.poly[1][i];
+            const double c4 = curve.poly[2][i];
+            const double c5 = curve.poly[3][i];
+            q[i] = curve.origin[i] + s * (c1 + s * (c2 + s * (c3 + s * (c4 + s * c5))));
+            const double d1 = c1 + s * (2 * c2 + s * (3 * c3 + s * (4 * c4 + s * 5 * c5)));
+            speed2 += d1 * d1;
+        }
+        out.deviation_mm = std::max(out.deviation_mm, std::min(to_piece(q, tail), to_piece(q, head)));
+        out.slowest = std::min(out.slowest, std::sqrt(speed2));
+        if (out.deviation_mm > stop_above_mm) break;
+    }
+}
+
+}  // namespace
 
 namespace {
 
@@ -178,37 +236,17 @@ bool build(const Transition& t, const PathPoint& a, const PathPoint& b, double t
         deviation_mm = bound;
         return true;
     }
-    const Piece tail = piece_of(t.replaced_before, 0.0, t.replaced_before.length);
-    const Piece head = piece_of(t.replaced_after, 0.0, t.replaced_after.length);
-    double deviation = 0;
-    double slowest = 1e300;
-    for (int k = 0; k <= deviation_samples; ++k) {
-        // XYZ position and slope only (point_at would do every axis and two more derivatives).
-        const double s = length * k / deviation_samples;
-        AxisVector q;
-        double speed2 = 0;
-        for (std::size_t i = 0; i < 3; ++i) {
-            const double c1 = curve.rate[i];
-            const double c2 = curve.poly[0][i];
-            const double c3 = curve.poly[1][i];
-            const double c4 = curve.poly[2][i];
-            const double c5 = curve.poly[3][i];
-            q[i] = curve.origin[i] + s * (c1 + s * (c2 + s * (c3 + s * (c4 + s * c5))));
-            const double d1 = c1 + s * (2 * c2 + s * (3 * c3 + s * (4 * c4 + s * 5 * c5)));
-            speed2 += d1 * d1;
-        }
-        deviation = std::max(deviation, std::min(to_piece(q, tail), to_piece(q, head)));
-        slowest = std::min(slowest, std::sqrt(speed2));
-        if (deviation > tolerance_mm) break;
-    }
-    deviation_mm = deviation;
-    return deviation <= deviation_target * tolerance_mm && slowest >= min_parametric_speed;
+    const CurveDeviation measured = measure_deviation(curve, t, tolerance_mm);
+    deviation_mm = measured.deviation_mm;
+    return measured.deviation_mm <= deviation_target * tolerance_mm && measured.slowest >= min_parametric_speed;
 }
 
 }  // namespace
 
-bool make_transition(const PathSegment& before, double before_room, const PathSegment& after, double after_room,
-                     double tolerance_mm, Transition& out, const ChainStart* chain) {
+namespace {
+
+bool single_quintic(const PathSegment& before, double before_room, const PathSegment& after, double after_room,
+                    double tolerance_mm, Transition& out, const ChainStart* chain) {
     if (!(tolerance_mm > 0) || before.shape == SegmentShape::quintic || after.shape == SegmentShape::quintic) {
         return false;
     }
@@ -260,6 +298,25 @@ bool make_transition(const PathSegment& before, double before_room, const PathSe
         t = std::max(trim_a, trim_b) * std::clamp(shrink, 0.05, 0.8);
     }
     return false;
+}
+
+}  // namespace
+
+bool make_transition(const PathSegment& before, double before_room, const PathSegment& after, double after_room,
+                     double tolerance_mm, Transition& out, const ChainStart* chain, const TurningLimits* turning) {
+    const bool quintic = single_quintic(before, before_room, after, after_room, tolerance_mm, out, chain);
+    out.more.clear();
+    if (turning == nullptr || (quintic && out.chained) ||
+        (before.shape != SegmentShape::arc && after.shape != SegmentShape::arc)) {
+        return quintic;
+    }
+    // Arcs joined tangentially with a jump in curvature: the ramp transition curves less near its
+    // ends; it is kept when its curves allow the higher speed (ramp_transition.hpp).
+    Transition ramp;
+    if (!make_ramp_transition(before, before_room, after, after_room, tolerance_mm, *turning, ramp)) return quintic;
+    if (quintic && !(turning_speed(ramp, *turning) > ramp_speed_margin * turning_speed(out, *turning))) return true;
+    out = std::move(ramp);
+    return true;
 }
 
 std::optional<Rebuilt> with_end_states(const Transition& transition, const std::array<double, 3>& start_d1,

@@ -4,7 +4,9 @@
 // and curvature vector, so the axes' velocity and acceleration stay continuous through it at any
 // speed, and that stays within the path tolerance of the programmed path.
 #include <array>
+#include <cstddef>
 #include <optional>
+#include <vector>
 
 #include "nckit/plan/path_segment.hpp"
 
@@ -23,15 +25,16 @@ inline constexpr double smooth_direction_tolerance = 1e-9;
 inline constexpr double smooth_curvature_tolerance = 1e-7;
 
 struct Transition {
-    PathSegment curve;            //!< quintic from before's new end to after's new start
-    double trim_before = 0;       //!< s cut from before's end
-    double trim_after = 0;        //!< s cut from after's start
-    double deviation_mm = 0;      //!< mm, largest distance of the curve from the programmed path found
-    PathPoint start;              //!< the state the curve leaves from (on before)
-    PathPoint end;                //!< and arrives at (on after)
-    PathSegment replaced_before;  //!< the programmed path it replaces: before's tail,
-    PathSegment replaced_after;   //!< and after's head
-    bool chained = false;         //!< starts with a ChainStart's curvature (make_transition)
+    PathSegment curve;              //!< quintic from before's new end to after's new start (or the first of a chain)
+    std::vector<PathSegment> more;  //!< a ramp transition's further quintics, in order (ramp_transition.hpp)
+    double trim_before = 0;         //!< s cut from before's end
+    double trim_after = 0;          //!< s cut from after's start
+    double deviation_mm = 0;        //!< mm, largest distance of the curve from the programmed path found
+    PathPoint start;                //!< the state the curve leaves from (on before)
+    PathPoint end;                  //!< and arrives at (on after)
+    PathSegment replaced_before;    //!< the programmed path it replaces: before's tail,
+    PathSegment replaced_after;     //!< and after's head
+    bool chained = false;           //!< starts with a ChainStart's curvature (make_transition)
 };
 
 //! The same transition with the direction and curvature vectors (dq/ds and d²q/ds² on XYZ) at
@@ -69,13 +72,35 @@ struct ChainStart {
     std::array<double, 3> entry_start_d1{};  //!< q'_in, its direction where it leaves the move before
 };
 
+//! The axes' acceleration (mm/s²) and jerk (mm/s³) limits on X, Y, Z, by which a jerk-limited
+//! plan chooses between the single quintic and a ramp transition (ramp_transition.hpp).
+struct TurningLimits {
+    std::array<double, 3> max_acceleration{};
+    std::array<double, 3> max_jerk{};
+};
+
 //! The transition is written to `out` (which it leaves undefined when there is none). With
 //! `chain`, when `before` is eaten whole, the curve first tries to start with the chain's
 //! curvature (out.chained tells whether it does; the transition into before must then be rebuilt
-//! to end in out.start's state, with_end_states).
+//! to end in out.start's state, with_end_states). With `turning` (jerk-limited plans), a tangent
+//! join of an arc whose curvature jumps also gets a ramp transition (ramp_transition.hpp), kept
+//! when its curves allow a higher speed (turning_speed) than the single quintic's.
 [[nodiscard]] bool make_transition(const PathSegment& before, double before_room, const PathSegment& after,
                                    double after_room, double tolerance_mm, Transition& out,
-                                   const ChainStart* chain = nullptr);
+                                   const ChainStart* chain = nullptr, const TurningLimits* turning = nullptr);
+
+//! How far the curve strays from the path `replaced` (its replaced_before and replaced_after):
+//! the largest distance found over 33 points of the curve (sampling stops once it exceeds
+//! stop_above_mm), and the smallest |dp/ds| among them.
+struct CurveDeviation {
+    double deviation_mm = 0;
+    double slowest = 0;
+};
+[[nodiscard]] CurveDeviation measure_deviation(const PathSegment& curve, const Transition& replaced,
+                                               double stop_above_mm);
+//! The same over `count` curves (a ramp transition's chain), measured against the path once cut.
+[[nodiscard]] CurveDeviation measure_deviation(const PathSegment* curves, std::size_t count, const Transition& replaced,
+                                               double stop_above_mm);
 
 //! Pieces of path left between transitions shorter than this (mm) join the transition.
 inline constexpr double min_leftover_mm = 1e-3;

@@ -1,5 +1,7 @@
 #include "window_feed.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <utility>
 
 #include "nckit/plan/segment_limits.hpp"
@@ -24,13 +26,14 @@ void WindowFeed::add_segment(PathSegment path, const ProfileLimits& limits, doub
     lookahead_.add(std::move(s));
 }
 
-bool WindowFeed::add_transition_pieces(Transition& transition, double feed_mm_s, const SegmentOrigin& origin) {
-    if (!split_transition_jerk_limited(transition.curve, machine_, feed_mm_s, pieces_)) return false;
+bool WindowFeed::add_curve_pieces(PathSegment& curve, int pieces, double feed_mm_s, const SegmentOrigin& origin,
+                                  bool continues_move) {
+    if (!split_transition_jerk_limited(curve, machine_, feed_mm_s, pieces_, pieces)) return false;
     for (std::size_t k = 0; k < pieces_.size(); ++k) {
         ArcPiece& piece = pieces_[k];
         // The pieces after the first continue one corner (the tool-path report counts it once).
-        add_segment(std::move(piece.path), piece.limits, piece.limits.max_velocity, origin, true, {}, k > 0,
-                    piece.check);
+        add_segment(std::move(piece.path), piece.limits, piece.limits.max_velocity, origin, true, {},
+                    continues_move || k > 0, piece.check);
     }
     return true;
 }
@@ -38,13 +41,25 @@ bool WindowFeed::add_transition_pieces(Transition& transition, double feed_mm_s,
 void WindowFeed::add_transition(Transition& transition, double feed_mm_s, const SegmentOrigin& origin) {
     // Under a jerk limit a transition that joins an arc is cut into pieces whose speed follows
     // its curvature; transitions between lines stay whole (a CAM chain would pay the pieces at
-    // every vertex).
+    // every vertex). A ramp transition's quintics share the pieces by their lengths.
     const bool next_to_arc =
         transition.replaced_before.shape == SegmentShape::arc || transition.replaced_after.shape == SegmentShape::arc;
-    if (kind_ == ProfileKind::scurve && next_to_arc && add_transition_pieces(transition, feed_mm_s, origin)) return;
-    const ProfileLimits limits = segment_limits(transition.curve, machine_, feed_mm_s, kind_,
-                                                kind_ == ProfileKind::trapezoid ? trapezoid_blend_normal_share : 0.5);
-    add_segment(std::move(transition.curve), limits, limits.max_velocity, origin, true, {});
+    const bool in_pieces = kind_ == ProfileKind::scurve && next_to_arc;
+    double total = transition.curve.length;
+    for (const PathSegment& g : transition.more) total += g.length;
+    auto add_one = [&](PathSegment& curve, bool continues_move) {
+        const int pieces =
+            transition.more.empty()
+                ? transition_pieces
+                : std::clamp(static_cast<int>(std::lround(ramp_transition_pieces * curve.length / total)), 4,
+                             transition_pieces);
+        if (in_pieces && add_curve_pieces(curve, pieces, feed_mm_s, origin, continues_move)) return;
+        const ProfileLimits limits = segment_limits(
+            curve, machine_, feed_mm_s, kind_, kind_ == ProfileKind::trapezoid ? trapezoid_blend_normal_share : 0.5);
+        add_segment(std::move(curve), limits, limits.max_velocity, origin, true, {}, continues_move);
+    };
+    add_one(transition.curve, false);
+    for (PathSegment& g : transition.more) add_one(g, true);
 }
 
 void WindowFeed::add_motion(PathSegment path, double feed_mm_s, bool stop, const SegmentOrigin& origin,

@@ -19,6 +19,9 @@ struct SegmentOrigin {
     std::int64_t sequence_number = -1;
 };
 
+//! Pieces of a whole ramp transition (shared among its quintics by length).
+inline constexpr int ramp_transition_pieces = 48;
+
 class WindowFeed {
 public:
     //! machine and lookahead must outlive the feed.
@@ -47,8 +50,10 @@ public:
     [[nodiscard]] bool at_rest() const { return at_rest_; }
 
 private:
-    //! Out of line: chains of lines never come here.
-    [[gnu::noinline]] bool add_transition_pieces(Transition& transition, double feed_mm_s, const SegmentOrigin& origin);
+    //! One quintic of a transition in `pieces` pieces; false (nothing added) when it is better
+    //! whole. Out of line: chains of lines never come here.
+    [[gnu::noinline]] bool add_curve_pieces(PathSegment& curve, int pieces, double feed_mm_s,
+                                            const SegmentOrigin& origin, bool continues_move);
 
     const MachineConfig& machine_;
     ProfileKind kind_;

@@ -116,5 +116,47 @@ TEST(Lookahead, RunsHeldByALaterJunctionLimitLeaveTheWindowEarly) {
     }
 }
 
+// A chain of lines and transitions between them, speeding up from rest: under a jerk limit their
+// acceleration and jerk limits differ by more than run_spread from one to the next (a line takes
+// the axis's acceleration, a transition keeps a share for its turning). They share one run, so
+// the path acceleration is not brought back to 0 at every vertex; arcs' pieces keep run_spread.
+TEST(Lookahead, StraightChainsShareARunAcrossDifferentRateLimits) {
+    auto pieces_of = [](SegmentShape odd_shape) {
+        Lookahead lookahead(ProfileKind::scurve, 10000);
+        AxisVector at;
+        for (int i = 0; i < 40; ++i) {
+            AxisVector to = at;
+            to[Axis::X] += 0.25;
+            WindowSegment s;
+            s.path = make_line(at, to);
+            if (i % 2 == 1) s.path.shape = odd_shape;  // the limits are what matters here
+            s.limits = i % 2 == 0 ? ProfileLimits{50, 500, 5000} : ProfileLimits{50, 360, 3600};
+            s.junction_max = s.limits.max_velocity;
+            lookahead.add(std::move(s));
+            at = to;
+        }
+        lookahead.finish();
+        std::vector<TrajectoryPiece> out;
+        auto& queue = lookahead.output();
+        while (!queue.empty()) {
+            out.push_back(queue.front());
+            queue.pop_front();
+        }
+        return out;
+    };
+    auto profiles = [](const std::vector<TrajectoryPiece>& pieces) {
+        return std::count_if(pieces.begin(), pieces.end(), [](const TrajectoryPiece& p) { return p.ends_profile; });
+    };
+    auto duration = [](const std::vector<TrajectoryPiece>& pieces) {
+        return pieces.back().start_time_s + pieces.back().duration_s;
+    };
+    const auto straight = pieces_of(SegmentShape::line);
+    const auto curved = pieces_of(SegmentShape::arc);
+    EXPECT_EQ(profiles(straight), 1);
+    EXPECT_EQ(profiles(curved), 40);
+    // One run at the lower limits is faster than 40 runs that each start and end at a = 0.
+    EXPECT_LT(duration(straight), 0.8 * duration(curved));
+}
+
 }  // namespace
 }  // namespace nckit
