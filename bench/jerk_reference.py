@@ -348,7 +348,7 @@ def runs(pieces, stops):
 def reference(pieces, vmax, amax, jmax, joins="pass", kink_rad=1e-3, curvature_tol=1e-4,
               start_points=2000, max_points=64000, tolerance=1e-4):
     """Time of the reference, grid doubled from start_points nodes (spread over the program by
-    length, at least 64 a run) until it moves by less than tolerance relative, or max_points.
+    length, at least 64 a run at the start) until it moves by less than tolerance relative, or max_points.
     The runs between rest points are independent: each is solved on its own."""
     corners, jumps = classify_joins(pieces, kink_rad, curvature_tol)
     stops = {0} | corners | (jumps if joins == "stop" else set())
@@ -357,7 +357,8 @@ def reference(pieces, vmax, amax, jmax, joins="pass", kink_rad=1e-3, curvature_t
     while points <= max_points:
         t, nodes, iterations = 0.0, 0, 0
         for run in runs(pieces, stops):
-            grid = Grid(run, {0}, max(64, round(points * sum(p.length for p in run) / total)))
+            floor = 64 * points // start_points  # short runs are refined too
+            grid = Grid(run, {0}, max(floor, round(points * sum(p.length for p in run) / total)))
             t_run, it, _ = solve(grid, vmax, amax, jmax)
             t, nodes, iterations = t + t_run, nodes + len(grid.s), max(iterations, it)
         refinements.append([nodes, t, iterations])
