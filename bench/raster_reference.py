@@ -21,7 +21,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import jerk_reference  # noqa: E402  (re-runs itself under Debian's python3 when scipy is missing)
-from jerk_reference import np  # noqa: E402
+from jerk_reference_lp import np  # noqa: E402
 from topp_reference import Piece  # noqa: E402
 
 ROWS, COLS, STEP_X, STEP_Y, FEED = 20, 99, 0.5, 1.0, 3000.0 / 60.0

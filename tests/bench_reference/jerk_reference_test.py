@@ -54,7 +54,7 @@ def main():
             with open(program, "w") as f:
                 f.write(f"G21 G17 G90 G94\nG1 {words} F100000\nM2\n")
             out = subprocess.run([sys.executable, script, program, "--jmax", str(jmax),
-                                  "--start-points", "600", "--max-points", "1200"],
+                                  "--start-points", "500", "--max-points", "1000"],
                                  capture_output=True, text=True, check=True).stdout
             result = json.loads(out)
             got, extrapolated = result["time_s"], result["extrapolated_s"]
