@@ -85,22 +85,43 @@ def runs(pieces, stops):
     return out + [current]
 
 
+def run_key(run):
+    """What a run's time depends on: lengths, feeds and the path's derivatives at a few points,
+    each axis's sign taken from its first non-zero value (the limits are symmetric, so a run and
+    its mirror image, like two semicircles G2 and G3 of one radius, take the same time)."""
+    samples = []
+    for p in run:
+        for x in (0.0, 0.1, 0.25, 0.5, 0.75, 0.9, 1.0):
+            samples.append(p.derivatives3(x * p.length))
+    signs = []
+    for i in range(3):
+        first = next((d[i] for sample in samples for d in sample if abs(d[i]) > 1e-12), 1.0)
+        signs.append(1.0 if first > 0 else -1.0)
+    flat = tuple(round(d[i] * signs[i], 9) for sample in samples for d in sample for i in range(3))
+    return tuple(round(p.length, 9) for p in run), tuple(p.feed for p in run), flat
+
+
 def reference(pieces, vmax, amax, jmax, joins="pass", kink_rad=1e-3, curvature_tol=1e-4,
               start_points=2000, max_points=64000, tolerance=1e-4):
     """Time of the reference, grid doubled from start_points nodes (spread over the program by
     length, at least 64 a run at the start) until it moves by less than tolerance relative, or max_points.
-    The runs between rest points are independent: each is solved on its own."""
+    The runs between rest points are independent: each is solved on its own (once for runs
+    that are the same up to the signs of the axes)."""
     corners, jumps = classify_joins(pieces, kink_rad, curvature_tol)
     stops = {0} | corners | (jumps if joins == "stop" else set())
     total = sum(p.length for p in pieces)
     refinements, points = [], start_points
     while points <= max_points:
-        t, nodes, iterations = 0.0, 0, 0
+        t, nodes, iterations, solved = 0.0, 0, 0, {}
         for run in runs(pieces, stops):
             floor = 64 * points // start_points  # short runs are refined too
-            grid = Grid(run, {0}, max(floor, round(points * sum(p.length for p in run) / total)))
-            t_run, it, _ = solve(grid, vmax, amax, jmax)
-            t, nodes, iterations = t + t_run, nodes + len(grid.s), max(iterations, it)
+            count = max(floor, round(points * sum(p.length for p in run) / total))
+            key = (run_key(run), count)
+            if key not in solved:
+                grid = Grid(run, {0}, count)
+                solved[key] = solve(grid, vmax, amax, jmax)[:2] + (len(grid.s),)
+            t_run, it, n_run = solved[key]
+            t, nodes, iterations = t + t_run, nodes + n_run, max(iterations, it)
         refinements.append([nodes, t, iterations])
         if len(refinements) > 1 and abs(t - refinements[-2][1]) < tolerance * t:
             break
