@@ -4,6 +4,8 @@
 # 100 mm/s, 500 mm/s² and 5,000 or 50,000 mm/s³ per axis. Two references per program:
 #   pass  curvature jumps passed with the acceleration step allowed there (a relaxation)
 #   stop  curvature jumps taken as exact stops (a feasible trajectory on the exact path)
+#   blend curvature jumps replaced by quintics within G64 P0.01 (jerk_reference_blend.py: a
+#         feasible trajectory on a path within P)
 # Corners stop in both. The circle of 2,000 G1 uses the circle r 20 of circle_g2.ngc, which lies
 # within 1e-4 mm of its chords (inside G64 P0.01); the raster uses its rows as the smooth surface
 # curve they are chords of (bench/raster_reference.py; within 1e-3 mm), its 90° corners stopped.
@@ -34,7 +36,10 @@ reference() {  # PROGRAM JERK JOINS: the extrapolated time (the JSON stays in $o
   local most=8000
   [[ $1 == semicircles_100 && $3 == stop ]] && most=64000
   if [[ ! -s $file ]]; then
-    if [[ $1 == raster_3d ]]; then
+    if [[ $3 == blend ]]; then
+      python3 "$repo/bench/jerk_reference_blend.py" "$programs/$1.ngc" --jmax "$2" --tolerance 0.01 \
+        --start-points 2000 --max-points 8000 > "$file.tmp"
+    elif [[ $1 == raster_3d ]]; then
       python3 "$repo/bench/raster_reference.py" --jmax "$2" --start-points 8000 --max-points 32000 > "$file.tmp"
     else
       python3 "$repo/bench/jerk_reference.py" "$programs/$1.ngc" --jmax "$2" --joins "$3" \
@@ -45,14 +50,14 @@ reference() {  # PROGRAM JERK JOINS: the extrapolated time (the JSON stays in $o
   python3 -c 'import json,sys; print("%.3f" % json.load(open(sys.argv[1]))["extrapolated_s"])' "$file"
 }
 ratio() { python3 -c "print('%.3f' % ($1 / $2))"; }
-echo "| program | jerk (mm/s³) | nckit S-curve (s) | reference, joins passed (s) | ratio | reference, joins stopped (s) | ratio |"
-echo "|---|---:|---:|---:|---:|---:|---:|"
+echo "| program | jerk (mm/s³) | nckit S-curve (s) | reference, joins passed (s) | ratio | joins blended within P (s) | ratio | joins stopped (s) | ratio |"
+echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|"
 for prog in circle_g2 circle_2000 semicircles_100 square_100 slot slot_f6000 raster_3d circle_8arcs; do
   for jerk in 50000 5000; do
     s=$(cycle "$prog" "$jerk")
     if [[ $prog == raster_3d ]]; then  # no curvature jump on the surface curve: one reference
       ref=$(reference "$prog" "$jerk" surface)
-      echo "| $prog | $jerk | $s | $ref | $(ratio "$s" "$ref") | $ref | $(ratio "$s" "$ref") |"
+      echo "| $prog | $jerk | $s | $ref | $(ratio "$s" "$ref") | $ref | $(ratio "$s" "$ref") | $ref | $(ratio "$s" "$ref") |"
       continue
     fi
     ref_prog=$prog
@@ -61,10 +66,12 @@ for prog in circle_g2 circle_2000 semicircles_100 square_100 slot slot_f6000 ras
     if python3 -c 'import json,sys; sys.exit(json.load(open(sys.argv[1]))["curvature_jumps"] == 0)' \
         "$out/$ref_prog.j$jerk.pass.json"; then
       stop=$(reference "$ref_prog" "$jerk" stop)
+      blend=$(reference "$ref_prog" "$jerk" blend)
     else
       stop=$pass  # no curvature jump: the same trajectory
+      blend=$pass
     fi
-    echo "| $prog | $jerk | $s | $pass | $(ratio "$s" "$pass") | $stop | $(ratio "$s" "$stop") |"
+    echo "| $prog | $jerk | $s | $pass | $(ratio "$s" "$pass") | $blend | $(ratio "$s" "$blend") | $stop | $(ratio "$s" "$stop") |"
   done
 done
 echo
