@@ -11,7 +11,7 @@
 # curve they are chords of (bench/raster_reference.py; within 1e-3 mm), its 90° corners stopped.
 # Prints a Markdown table; keeps each reference's JSON in OUT_DIR, and reuses the ones it finds
 # there (delete them to recompute).
-# Usage: bench/scurve_reference.sh [NCKIT_BINARY] [OUT_DIR]   (about an hour on 2 cores)
+# Usage: bench/scurve_reference.sh [NCKIT_BINARY] [OUT_DIR]   (about half an hour on 2 cores)
 set -euo pipefail
 repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 nckit=${1:-$repo/build/release/src/nckit}
