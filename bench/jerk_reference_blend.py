@@ -119,6 +119,25 @@ def deviation(moves, n, quintic):
     return max(min(m.distance(quintic.position(x)) for m in near) for x in np.linspace(0.0, 1.0, 401))
 
 
+def blended_pieces(text, tolerance):
+    """The program's path with each curvature jump blended within tolerance; and the trims."""
+    moves = [Move(m) for m in parse(text)]
+    _, jumps = classify_joins([m.piece for m in moves], 1e-3, 1e-4)
+    trims = {}
+    for n in sorted(jumps):
+        lo, hi = 0.0, 0.45 * min(moves[n - 1].length, moves[n].length)
+        for _ in range(40):
+            mid = 0.5 * (lo + hi)
+            lo, hi = (mid, hi) if deviation(moves, n, blend(moves, n, mid)) <= tolerance else (lo, mid)
+        trims[n] = lo
+    pieces = []
+    for n, m in enumerate(moves):
+        if n in trims:
+            pieces.append(blend(moves, n, trims[n]))
+        pieces.append(Trimmed(m, trims.get(n, 0.0), m.length - trims.get(n + 1, 0.0)))
+    return pieces, trims
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("program")
@@ -129,22 +148,7 @@ def main():
     ap.add_argument("--start-points", type=int, default=2000)
     ap.add_argument("--max-points", type=int, default=8000)
     args = ap.parse_args()
-    moves = [Move(m) for m in parse(open(args.program).read())]
-    _, jumps = classify_joins([m.piece for m in moves], 1e-3, 1e-4)
-    trims = {}
-    for n in sorted(jumps):
-        lo, hi = 0.0, 0.45 * min(moves[n - 1].length, moves[n].length)
-        for _ in range(40):
-            mid = 0.5 * (lo + hi)
-            lo, hi = (mid, hi) if deviation(moves, n, blend(moves, n, mid)) <= args.tolerance else (lo, mid)
-        trims[n] = lo
-    pieces = []
-    for n, m in enumerate(moves):
-        start = trims.get(n, 0.0)
-        end = m.length - trims.get(n + 1, 0.0)
-        if n in trims:
-            pieces.append(blend(moves, n, trims[n]))
-        pieces.append(Trimmed(m, start, end))
+    pieces, trims = blended_pieces(open(args.program).read(), args.tolerance)
     result = reference(pieces, args.vmax, args.amax, args.jmax, "pass",
                        start_points=args.start_points, max_points=args.max_points)
     print(json.dumps({"program": args.program, "transitions": len(trims),
