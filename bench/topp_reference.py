@@ -21,7 +21,9 @@ With --jmax J the jerk the path itself takes at each point joins the constraints
 |q_i''' * sdot^3 + 3 q_i'' * sdot * sddot| <= J (turning jerk and coupling; the path jerk term
 q_i' * sdddot is left out, so speed changes switch their acceleration at once). For a given u it
 is linear in sddot; the maximum velocity curve is lowered by bisection where it leaves no sddot
-(docs/planner.md, "The time-optimal reference").
+(docs/planner.md, "The time-optimal reference"). Without the path jerk this is no jerk-limited
+reference (at J 5,000 it equals the unlimited optimum on the circle): bench/jerk_reference.py
+keeps the full per-axis jerk.
 
 Usage: bench/topp_reference.py PROGRAM [--vmax 100] [--amax 500] [--jmax J] [--kink-rad 1e-3]
 Prints JSON: {"program", "time_s", "grid_points", "refinements": [[points, time_s], ...],

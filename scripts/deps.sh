@@ -32,10 +32,15 @@ groups[test]="
   chromium fonts-dejavu-core
   # The CTest format checks the layout of the sources with clang-format (14, as .clang-format expects).
   clang-format
+  # The CTest bench_reference_scurve_line runs bench/jerk_reference.py, whose LPs need scipy (HiGHS).
+  python3-scipy
 "
 # Google Benchmark for bench/.
 groups[bench]="
   libbenchmark-dev
+  # bench/jerk_reference.py (the jerk-limited reference of bench/scurve_reference.sh) solves its
+  # LPs with scipy's linprog (HiGHS); it brings numpy along.
+  python3-scipy
 "
 # LinuxCNC's rs274 interpreter: the reference the program tests and the throughput benchmark
 # compare against. Large, so `make run` does not install it; `make test` and `make bench` do.
