@@ -8,6 +8,7 @@
 #include <variant>
 #include <vector>
 
+#include "interpreted_moves.hpp"
 #include "nckit/interp/interpreter.hpp"
 #include "nckit/plan/path_segment.hpp"
 #include "nckit/plan/planner.hpp"
@@ -16,18 +17,7 @@ namespace nckit {
 namespace {
 
 std::vector<Move> moves_of(const std::string& program, const MachineConfig& machine) {
-    std::vector<Move> moves;
-    Interpreter interpreter(machine, ProgramSource::from_string(program, "regression.nc"));
-    for (;;) {
-        InterpResult result = interpreter.next();
-        if (const auto* d = std::get_if<Diagnostic>(&result)) {
-            ADD_FAILURE() << d->message;
-            break;
-        }
-        if (std::holds_alternative<ProgramEnd>(result)) break;
-        moves.push_back(std::get<Move>(std::move(result)));
-    }
-    return moves;
+    return plan_test::interpreted_moves(program, machine, "regression.nc");
 }
 
 //! The largest |a| / max_acceleration of any axis, from second differences of the position

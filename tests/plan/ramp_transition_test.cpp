@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "../../src/plan/ramp_transition.hpp"
+#include "interpreted_moves.hpp"
 #include "nckit/interp/interpreter.hpp"
 #include "nckit/plan/planner.hpp"
 
@@ -142,18 +143,7 @@ TEST(RampTransition, RefusesJoinsItDoesNotHandle) {
 }
 
 std::vector<Move> moves_of(const std::string& program, const MachineConfig& machine) {
-    std::vector<Move> moves;
-    Interpreter interpreter(machine, ProgramSource::from_string(program, "semicircles.ngc"));
-    for (;;) {
-        InterpResult result = interpreter.next();
-        if (const auto* d = std::get_if<Diagnostic>(&result)) {
-            ADD_FAILURE() << d->message;
-            break;
-        }
-        if (std::holds_alternative<ProgramEnd>(result)) break;
-        moves.push_back(std::get<Move>(std::move(result)));
-    }
-    return moves;
+    return plan_test::interpreted_moves(program, machine, "semicircles.ngc");
 }
 
 TEST(RampTransition, PlanThroughSemicirclesKeepsAccelerationAndJerkAndPassesTheJoinsFaster) {
