@@ -10,15 +10,8 @@ nckit=${1:-$repo/build/release/src/nckit}
 programs=$repo/bench/planner_programs
 work=$(mktemp -d -t nckit-optimum-XXXXXX)
 trap 'rm -rf "$work"' EXIT
-for jerk in 50000 5000; do
-  {
-    printf '[machine]\nname = "optimum-bench"\nservo_period_s = 0.001\n\n'
-    for ax in X Y Z; do
-      printf '[[axis]]\nname = "%s"\nkind = "linear"\nmax_velocity = 100\nmax_acceleration = 500\n' "$ax"
-      printf 'max_jerk = %s\nmin = -1000.0\nmax = 1000.0\nsteps_per_unit = 1000.0\n\n' "$jerk"
-    done
-  } > "$work/j$jerk.toml"
-done
+source "$repo/bench/planner_machines.sh"
+write_planner_machines "$work"
 cycle() { "$nckit" plan "$programs/$1" --machine "$work/j$2.toml" --profile "$3" --json |
           python3 -c 'import json,sys; print("%.3f" % json.load(sys.stdin)["cycle_time_s"])'; }
 echo "| program | optimum (s) | nckit trapezoid (s) | ratio | S-curve j 50,000 (s) | S-curve j 5,000 (s) |"

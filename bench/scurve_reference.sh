@@ -18,15 +18,8 @@ nckit=${1:-$repo/build/release/src/nckit}
 out=${2:-$(mktemp -d -t nckit-jerk-reference-XXXXXX)}
 mkdir -p "$out"
 programs=$repo/bench/planner_programs
-for jerk in 50000 5000; do
-  {
-    printf '[machine]\nname = "optimum-bench"\nservo_period_s = 0.001\n\n'
-    for ax in X Y Z; do
-      printf '[[axis]]\nname = "%s"\nkind = "linear"\nmax_velocity = 100\nmax_acceleration = 500\n' "$ax"
-      printf 'max_jerk = %s\nmin = -1000.0\nmax = 1000.0\nsteps_per_unit = 1000.0\n\n' "$jerk"
-    done
-  } > "$out/j$jerk.toml"
-done
+source "$repo/bench/planner_machines.sh"
+write_planner_machines "$out"
 cycle() { "$nckit" plan "$programs/$1.ngc" --machine "$out/j$2.toml" --profile scurve --json |
           python3 -c 'import json,sys; print("%.3f" % json.load(sys.stdin)["cycle_time_s"])'; }
 reference() {  # PROGRAM JERK JOINS: the extrapolated time (the JSON stays in $out)
