@@ -227,7 +227,7 @@ namespace {
 
 //! Pieces of `segment` under a jerk limit, as split_arc_jerk_limited describes, n of them.
 bool split_jerk_limited(const PathSegment& segment, int n, const MachineConfig& machine, double feed_mm_s,
-                        std::vector<ArcPiece>& out) {
+                        double acceleration_share, double jerk_share, std::vector<ArcPiece>& out) {
     if (n < 2) return false;
     // Only where the curvature sets the speed: the whole segment's limits are below the feed and
     // the axes' speeds (else it runs at the feed whole, and keeps more acceleration).
@@ -249,8 +249,8 @@ bool split_jerk_limited(const PathSegment& segment, int n, const MachineConfig& 
     for (const AxisConfig& axis : machine.axes) {
         const std::size_t i = index(axis.axis);
         if (whole.d1[i] > 0) {
-            a = std::min(a, jerk_limited_acceleration_share * axis.max_acceleration / whole.d1[i]);
-            j = std::min(j, jerk_limited_jerk_share * axis.max_jerk / whole.d1[i]);
+            a = std::min(a, acceleration_share * axis.max_acceleration / whole.d1[i]);
+            j = std::min(j, jerk_share * axis.max_jerk / whole.d1[i]);
         }
         if (whole.d2[i] > 0) {
             const double turning_speed = std::min(cruise, std::sqrt(axis.max_acceleration / whole.d2[i]));
@@ -285,13 +285,15 @@ bool split_arc_jerk_limited(const PathSegment& arc, const MachineConfig& machine
     if (arc.shape != SegmentShape::arc || !(arc.length > 0)) return false;
     const double turns = std::abs(arc.sweep_rad()) / (2.0 * M_PI);
     const int n = static_cast<int>(std::min<double>(max_arc_pieces, std::ceil(turns * arc_pieces_per_turn)));
-    return split_jerk_limited(arc, n, machine, feed_mm_s, out);
+    return split_jerk_limited(arc, n, machine, feed_mm_s, jerk_limited_acceleration_share, jerk_limited_jerk_share,
+                              out);
 }
 
 bool split_transition_jerk_limited(const PathSegment& curve, const MachineConfig& machine, double feed_mm_s,
                                    std::vector<ArcPiece>& out, int pieces) {
     if (curve.shape != SegmentShape::quintic || !(curve.length > 0)) return false;
-    return split_jerk_limited(curve, pieces, machine, feed_mm_s, out);
+    return split_jerk_limited(curve, pieces, machine, feed_mm_s, transition_acceleration_share, transition_jerk_share,
+                              out);
 }
 
 }  // namespace nckit::plan_detail

@@ -36,8 +36,13 @@ inline constexpr int max_arc_pieces = 1024;
 //! What every piece of a jerk-limited arc keeps for the path's own acceleration and jerk (the
 //! same on all pieces of an arc): shares of each axis's limits, chosen by measurement on the
 //! planner benchmark programs (docs/planner.md, "Speed along an arc (S-curve)").
-inline constexpr double jerk_limited_acceleration_share = 0.3;
+inline constexpr double jerk_limited_acceleration_share = 0.35;
 inline constexpr double jerk_limited_jerk_share = 0.4;
+//! The same for the pieces of a transition quintic next to an arc. A transition is short and
+//! its run mostly holds the speed between two arcs, so a smaller acceleration share raises its
+//! speed limit where it counts (docs/planner.md, "Ramp transitions").
+inline constexpr double transition_acceleration_share = 0.15;
+inline constexpr double transition_jerk_share = 0.25;
 //! At most this share of an axis's jerk goes to the coupling term 3·d2·v·a.
 inline constexpr double jerk_limited_coupling_share = 0.6;
 
