@@ -165,7 +165,7 @@ async function testPage(browser, spec) {
     // (speed, velocity, acceleration, jerk) and the first is not blank.
     const before = await page.evaluate(() => window.nckitReport.chartsDrawn());
     await (await page.$(".charts")).scrollIntoView();
-    await page.waitForFunction(() => window.nckitReport.chartsDrawn() > 0, { timeout: 30000 });
+    await page.waitForFunction(() => window.nckitReport.chartsDrawn() > 0, { timeout: 120000, polling: 50 });
     await frames(page);
     const drawnCharts = await page.evaluate(() => window.nckitReport.chartsDrawn());
     const chartInk = nonBackgroundFraction(decode(await (await page.$(".charts canvas")).screenshot({ type: "png" })));
