@@ -13,6 +13,7 @@
 #include "junction.hpp"
 #include "lookahead.hpp"
 #include "pending_motion.hpp"
+#include "ramp_transition.hpp"
 #include "transition.hpp"
 #include "window_feed.hpp"
 #include "nckit/plan/segment_limits.hpp"
@@ -55,18 +56,8 @@ struct Planner::Impl {
           options(o),
           kind(o.profile.value_or(machine.profile)),
           lookahead(kind, o.window_moves, machine.spindle),
-          window_feed(machine, kind, lookahead) {
-        // An axis the machine lacks cannot move (check_axes), so it limits nothing.
-        turning.max_acceleration.fill(std::numeric_limits<double>::infinity());
-        turning.max_jerk.fill(std::numeric_limits<double>::infinity());
-        for (const AxisConfig& axis : machine.axes) {
-            const std::size_t i = index(axis.axis);
-            if (i < 3) {
-                turning.max_acceleration[i] = axis.max_acceleration;
-                turning.max_jerk[i] = axis.max_jerk;
-            }
-        }
-    }
+          window_feed(machine, kind, lookahead),
+          turning(plan_detail::turning_limits(machine)) {}
 
     //! The pending motion goes to the window, ending at rest when `stop`, else at most at its own
     //! speed limit (the next segment's lowers it further). An arc whose curvature sets its speed

@@ -309,4 +309,18 @@ double turning_speed(const Transition& transition, const TurningLimits& limits) 
     return v;
 }
 
+TurningLimits turning_limits(const MachineConfig& machine) {
+    TurningLimits limits;
+    limits.max_acceleration.fill(std::numeric_limits<double>::infinity());
+    limits.max_jerk.fill(std::numeric_limits<double>::infinity());
+    for (const AxisConfig& axis : machine.axes) {
+        const std::size_t i = index(axis.axis);
+        if (i < 3) {
+            limits.max_acceleration[i] = axis.max_acceleration;
+            limits.max_jerk[i] = axis.max_jerk;
+        }
+    }
+    return limits;
+}
+
 }  // namespace nckit::plan_detail

@@ -6,6 +6,7 @@
 // path a little inside it (its curvature slightly above the arc's, eased in), and changes the
 // curvature linearly over a short ramp at the join: a chain of quintics, each matching position,
 // direction and curvature at its ends.
+#include "nckit/core/machine.hpp"
 #include "transition.hpp"
 
 namespace nckit::plan_detail {
@@ -25,5 +26,9 @@ inline constexpr double turning_jerk_share = 0.8;
 //! The lowest speed (mm/s) the transition's curves allow at constant path speed: the minimum
 //! over sampled points and axes of sqrt(amax/|q''|) and cbrt(turning_jerk_share·jmax/|q'''|).
 [[nodiscard]] double turning_speed(const Transition& transition, const TurningLimits& limits);
+
+//! The machine's X, Y, Z limits; an axis the machine lacks cannot move (check_axes), so it
+//! limits nothing (infinite).
+[[nodiscard]] TurningLimits turning_limits(const MachineConfig& machine);
 
 }  // namespace nckit::plan_detail
