@@ -142,6 +142,18 @@ TEST(RampTransition, RefusesJoinsItDoesNotHandle) {
     EXPECT_FALSE(make_ramp_transition(arc, 0.5 * arc.length, kinked, 0.5, 0.01, fast, t));
 }
 
+//! The planner benchmark's machine: S-curve, 100 mm/s, 500 mm/s², 50,000 mm/s³ on every axis.
+MachineConfig benchmark_machine() {
+    MachineConfig machine = default_mill();
+    machine.profile = ProfileKind::scurve;
+    for (AxisConfig& axis : machine.axes) {
+        axis.max_velocity = 100;
+        axis.max_acceleration = 500;
+        axis.max_jerk = 50000;
+    }
+    return machine;
+}
+
 std::vector<Move> moves_of(const std::string& program, const MachineConfig& machine) {
     return plan_test::interpreted_moves(program, machine, "semicircles.ngc");
 }
@@ -154,13 +166,7 @@ TEST(RampTransition, PlanThroughSemicirclesKeepsAccelerationAndJerkAndPassesTheJ
         "G2 X22.0000 Y0. I3.6500 J0.\n"
         "G3 X30.0000 Y0. I4.0000 J0.\n"
         "M2\n";
-    MachineConfig machine = default_mill();
-    machine.profile = ProfileKind::scurve;
-    for (AxisConfig& axis : machine.axes) {
-        axis.max_velocity = 100;
-        axis.max_acceleration = 500;
-        axis.max_jerk = 50000;
-    }
+    const MachineConfig machine = benchmark_machine();
     const PlanResult plan = plan_moves(moves_of(program, machine), machine);
     ASSERT_TRUE(plan.diagnostics.empty());
     // Finite differences of positions every 0.1 ms: a k-th difference is a mean of the k-th
@@ -223,13 +229,7 @@ TEST(RampTransition, TwentySemicirclesPlanWithinTheirMeasuredTime) {
         "G2 X142.7000 Y0. I3.7500 J0.\n"
         "G3 X149.8000 Y0. I3.5500 J0.\n"
         "M2\n";
-    MachineConfig machine = default_mill();
-    machine.profile = ProfileKind::scurve;
-    for (AxisConfig& axis : machine.axes) {
-        axis.max_velocity = 100;
-        axis.max_acceleration = 500;
-        axis.max_jerk = 50000;
-    }
+    const MachineConfig machine = benchmark_machine();
     const PlanResult plan = plan_moves(moves_of(program, machine), machine);
     ASSERT_TRUE(plan.diagnostics.empty());
     const double cycle_s = plan.trajectory.duration_s();
