@@ -214,10 +214,6 @@ bool make_ramp_transition(const PathSegment& before, double before_room, const P
                 m2.tb = share * after_room;
                 double lo = 0.0;
                 double hi = 0.95 * std::min(m2.ta, m2.tb);
-                RampSolution found;
-                double fda = 0;
-                double fdb = 0;
-                bool any = false;
                 auto fits = [&](double w, RampSolution& s, double& da, double& db) {
                     m2.w = w;
                     m2.ease_a = ease * (m2.ta - w);
@@ -231,31 +227,27 @@ bool make_ramp_transition(const PathSegment& before, double before_room, const P
                     set_knots(m2);
                     return solve(m2, s, da, db) && s.max_y <= target;
                 };
+                // The widest ramp that fits: lo stays 0 when none does.
                 RampSolution s;
                 double da = 0;
                 double db = 0;
                 if (fits(hi, s, da, db)) {
                     lo = hi;
-                    found = s;
-                    fda = da;
-                    fdb = db;
-                    any = true;
                 } else {
                     for (int k = 0; k < bisections; ++k) {
                         const double mid = 0.5 * (lo + hi);
                         if (fits(mid, s, da, db)) {
                             lo = mid;
-                            found = s;
-                            fda = da;
-                            fdb = db;
-                            any = true;
                         } else {
                             hi = mid;
                         }
                     }
                 }
-                if (!any || !(lo > 1e-6)) continue;
+                if (!(lo > 1e-6)) continue;
                 // m2 back at the widest ramp that fits (the bisection may have left it at a wider one).
+                RampSolution found;
+                double fda = 0;
+                double fdb = 0;
                 if (!fits(lo, found, fda, fdb)) continue;
                 const double speed = model_speed(found, amax, jmax);
                 if (speed > best_speed) {
