@@ -14,6 +14,7 @@ namespace nckit {
 
 using interp::comp::in_plane;
 using interp::comp::set_in_plane;
+using interp::comp::turn_of;
 
 std::optional<CompError> CutterCompensator::start_up_on_arc(Move move) {
     auto& arc = std::get<Arc>(move.what);
@@ -21,7 +22,7 @@ std::optional<CompError> CutterCompensator::start_up_on_arc(Move move) {
     const Vec2 from = in_plane(arc.from, p);
     const Vec2 end = in_plane(arc.to, p);
     const Vec2 center = in_plane(arc.center, p);
-    const int turn = arc.direction == ArcDirection::counterclockwise ? 1 : -1;
+    const int turn = turn_of(arc);
     // As for a straight start-up, one radius long (to rounding) runs: see start_up().
     if (nckit::length(end - from) < radius_mm_ - 1e-9) {
         return error(move.where, "cutter-comp",

@@ -15,6 +15,7 @@ namespace nckit {
 
 using interp::comp::in_plane;
 using interp::comp::set_in_plane;
+using interp::comp::turn_of;
 
 using interp::comp::Corner;
 using interp::comp::Segment;
@@ -31,7 +32,7 @@ Segment segment_of(const Move& move, PlaneAxes p) {
         s.start = in_plane(arc->from, p);
         s.end = in_plane(arc->to, p);
         s.center = in_plane(arc->center, p);
-        s.turn = arc->direction == ArcDirection::counterclockwise ? 1 : -1;
+        s.turn = turn_of(*arc);
         return s;
     }
     const auto& line = std::get<Line>(move.what);
@@ -75,7 +76,7 @@ std::vector<Vec2> samples_of(const Move& move, PlaneAxes p) {
     Vec2 a = in_plane(arc.from, p);
     double r = nckit::length(a - c);
     double a0 = std::atan2(a.y - c.y, a.x - c.x);
-    double sweep = std::min(arc_sweep_rad(arc), two_pi) * (arc.direction == ArcDirection::counterclockwise ? 1 : -1);
+    double sweep = std::min(arc_sweep_rad(arc), two_pi) * turn_of(arc);
     for (int i = 0; i <= n; ++i) {
         double angle = a0 + sweep * i / n;
         out.push_back({c.x + r * std::cos(angle), c.y + r * std::sin(angle)});

@@ -19,6 +19,11 @@ inline void set_in_plane(AxisVector& v, PlaneAxes p, Vec2 point) {
     v[p.second] = point.y;
 }
 
+//! An arc's turn in its plane: +1 counter-clockwise, -1 clockwise.
+[[nodiscard]] inline int turn_of(const Arc& arc) {
+    return arc.direction == ArcDirection::counterclockwise ? 1 : -1;
+}
+
 //! A programmed or compensated element in the plane.
 struct Segment {
     bool arc = false;

@@ -27,6 +27,7 @@ namespace nckit {
 
 using interp::comp::in_plane;
 using interp::comp::set_in_plane;
+using interp::comp::turn_of;
 
 namespace {
 
@@ -44,10 +45,6 @@ double angle_of(Vec2 v) {
 
 Vec2 direction(double angle_rad) {
     return {std::cos(angle_rad), std::sin(angle_rad)};
-}
-
-int turn_of(const Arc& arc) {
-    return arc.direction == ArcDirection::counterclockwise ? 1 : -1;
 }
 
 //! The tool (side +1 left, -1 right) runs inside an arc turning `turn`.
