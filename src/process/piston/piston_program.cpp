@@ -30,8 +30,9 @@ constexpr double clearance_mm = 1.0;
 
 //! A value as the program writes it: 5 decimals (0.01 um), a decimal point always, no "-0".
 std::string number(double value) {
-    if (std::abs(value) < 5e-6) value = 0.0;
-    return fmt::format("{:.5f}", value);
+    std::string text;
+    append_rounded(text, value, 5);
+    return text;
 }
 
 std::string comment_text(std::string text) {
