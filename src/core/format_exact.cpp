@@ -44,4 +44,13 @@ double append_rounded(std::string& out, double value, int decimals) {
     return std::abs(written - value);
 }
 
+std::string comment_text(std::string text) {
+    for (char& c : text) {
+        if (c == '(') c = '[';
+        if (c == ')') c = ']';
+        if (c == '\n' || c == '\r') c = ' ';
+    }
+    return text;
+}
+
 }  // namespace nckit

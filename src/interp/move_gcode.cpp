@@ -32,17 +32,6 @@ char offset_letter(Axis axis) {
     return axis == Axis::X ? 'I' : axis == Axis::Y ? 'J' : 'K';
 }
 
-//! Text that may stand inside a comment: G-code comments do not nest, so a '(' or ')' of a file
-//! or machine name (`part(2).nc`) would end the comment early or be refused; they become [ ].
-std::string comment_text(std::string text) {
-    for (char& c : text) {
-        if (c == '(') c = '[';
-        if (c == ')') c = ']';
-        if (c == '\n' || c == '\r') c = ' ';
-    }
-    return text;
-}
-
 void source_comment(std::string& out, const SourceLocation& where) {
     std::string name = comment_text(std::filesystem::path(where.file_name()).filename().string());
     fmt::format_to(std::back_inserter(out), " ({}:{})", name, where.line);

@@ -14,4 +14,9 @@ void append_exact(std::string& out, double value);
 //! rounds to zero. Returns how far the written number lies from `value`.
 double append_rounded(std::string& out, double value, int decimals);
 
+//! Text that may stand inside a G-code comment: comments do not nest, so a '(' or ')' of a title,
+//! file or machine name (`part(2).nc`) would end the comment early or be refused; they become
+//! [ ], and line breaks become spaces.
+std::string comment_text(std::string text);
+
 }  // namespace nckit

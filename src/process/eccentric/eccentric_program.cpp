@@ -32,12 +32,6 @@ std::string feed_text(double value) {
     return text;
 }
 
-std::string comment_text(std::string text) {
-    text.erase(std::remove_if(text.begin(), text.end(), [](char c) { return c == '(' || c == ')' || c == '\n'; }),
-               text.end());
-    return text;
-}
-
 }  // namespace
 
 Result<std::string> eccentric_program(const EccentricJob& job, const std::string& title) {

@@ -35,12 +35,6 @@ std::string number(double value) {
     return text;
 }
 
-std::string comment_text(std::string text) {
-    text.erase(std::remove_if(text.begin(), text.end(), [](char c) { return c == '(' || c == ')' || c == '\n'; }),
-               text.end());
-    return text;
-}
-
 }  // namespace
 
 std::string piston_program(const cam::PistonJob& job, const PistonProgramOptions& options) {
