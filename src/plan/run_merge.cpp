@@ -1,0 +1,50 @@
+#include "run_merge.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace nckit::plan_detail {
+
+namespace {
+
+//! Shares of the widest rates tried, fastest first (never below the tightest rates).
+constexpr std::array<double, 4> rate_levels = {1.0, 0.7, 0.5, 0.35};
+//! Top speeds tried per level: the highest, then a bisection.
+constexpr int top_steps = 7;
+
+}  // namespace
+
+bool merged_profile(double distance, double v_start, double v_end, const MergeRates& rates,
+                    const std::vector<CheckedSpan>& spans, Profile& out) {
+    bool found = false;
+    const double floor_speed = std::max(v_start, v_end);
+    double last_a = -1;
+    for (const double level : rate_levels) {
+        ProfileLimits limits;
+        limits.max_acceleration = std::max(rates.tightest.max_acceleration, level * rates.widest.max_acceleration);
+        limits.max_jerk = std::max(rates.tightest.max_jerk, level * rates.widest.max_jerk);
+        if (limits.max_acceleration == last_a) break;  // already at the tightest rates
+        last_a = limits.max_acceleration;
+        double lo = floor_speed;
+        double hi = std::max(floor_speed, rates.widest.max_velocity);
+        for (int k = 0; k < top_steps; ++k) {
+            const double top = k == 0 ? hi : 0.5 * (lo + hi);
+            limits.max_velocity = top;
+            const Profile candidate = plan_profile(distance, v_start, v_end, limits, ProfileKind::scurve);
+            const bool same_ends = candidate.start_velocity == v_start && candidate.end_velocity == v_end;
+            if (same_ends && profile_keeps_pieces(candidate, spans)) {
+                if (!found || candidate.duration_s() < out.duration_s()) out = candidate;
+                found = true;
+                if (k == 0) break;
+                lo = top;
+            } else {
+                hi = top;
+            }
+            if (!(hi > lo * (1.0 + 1e-4))) break;
+        }
+    }
+    return found;
+}
+
+}  // namespace nckit::plan_detail
