@@ -265,6 +265,8 @@ std::size_t Lookahead::merge_following(Profile& profile) {
     if (!append_merge_spans(0, front.count)) return 1;
     MergeRates rates{front.limits, front.limits};
     rates.widest.max_velocity = std::max(front.limits.max_velocity, front.cruise_velocity);
+    MergeRates front_rates = rates;
+    front_rates.curved = front.cruise_velocity > 0;
     double plan_s = profile.duration_s();  // the best plan of the runs taken so far and the ones after
     double v = profile.end_velocity;
     double length = front.length;
@@ -301,6 +303,15 @@ std::size_t Lookahead::merge_following(Profile& profile) {
             taken = m + 1;
         } else if (m + 1 - taken >= merge_patience) {
             break;
+        }
+    }
+    // A run of curved pieces alone: its own profile with higher rates, where its pieces allow.
+    if (taken == 1 && front_rates.curved) {
+        merge_spans_.resize(front.count);
+        Profile faster;
+        if (merged_profile(front.length, start_speed_, profile.end_velocity, front_rates, merge_spans_, faster) &&
+            faster.duration_s() < profile.duration_s() * (1.0 - 1e-9)) {
+            profile = faster;
         }
     }
     return taken;

@@ -9,7 +9,7 @@ namespace nckit::plan_detail {
 namespace {
 
 //! Shares of the widest rates tried, fastest first (never below the tightest rates).
-constexpr std::array<double, 4> rate_levels = {1.0, 0.7, 0.5, 0.35};
+constexpr std::array<double, 6> rate_levels = {2.0, 1.5, 1.0, 0.7, 0.5, 0.35};
 //! Top speeds tried per level: the highest, then a bisection.
 constexpr int top_steps = 7;
 
@@ -21,6 +21,7 @@ bool merged_profile(double distance, double v_start, double v_end, const MergeRa
     const double floor_speed = std::max(v_start, v_end);
     double last_a = -1;
     for (const double level : rate_levels) {
+        if (level > 1.0 && !rates.curved) continue;
         ProfileLimits limits;
         limits.max_acceleration = std::max(rates.tightest.max_acceleration, level * rates.widest.max_acceleration);
         limits.max_jerk = std::max(rates.tightest.max_jerk, level * rates.widest.max_jerk);

@@ -24,6 +24,8 @@ namespace nckit::plan_detail {
 struct MergeRates {
     ProfileLimits widest;    //!< the highest speed, acceleration and jerk of the runs
     ProfileLimits tightest;  //!< the lowest acceleration and jerk of the runs
+    //! Every span is a curved piece with its axes known: rates above the widest are tried too.
+    bool curved = false;
 };
 
 //! The fastest profile over `distance` from v_start to v_end (both kept exactly) among S-curves
