@@ -30,8 +30,10 @@ bool merged_profile(double distance, double v_start, double v_end, const MergeRa
         double lo = floor_speed;
         double hi = std::max(floor_speed, rates.widest.max_velocity);
         for (int k = 0; k < top_steps; ++k) {
-            // The highest top first, then no rise at all: where neither fits, no top between does.
-            const double top = k == 0 ? hi : (k == 1 ? lo : 0.5 * (lo + hi));
+            // The highest top first, then (between two moving ends) no rise at all: where neither
+            // fits, no top between does.
+            const bool no_rise = k == 1 && lo > 0;
+            const double top = k == 0 ? hi : (no_rise ? lo : 0.5 * (lo + hi));
             limits.max_velocity = top;
             const Profile candidate = plan_profile(distance, v_start, v_end, limits, ProfileKind::scurve);
             const bool same_ends = candidate.start_velocity == v_start && candidate.end_velocity == v_end;
@@ -40,7 +42,7 @@ bool merged_profile(double distance, double v_start, double v_end, const MergeRa
                 found = true;
                 if (k == 0) break;
                 lo = top;
-            } else if (k == 1) {
+            } else if (no_rise) {
                 break;
             } else {
                 hi = top;
