@@ -241,15 +241,6 @@ Profile Lookahead::run_profile(const WindowRun& r, std::size_t first, double v_s
     return raised_profile(profile, r.length, r.limits, r.cruise_velocity, spans_);
 }
 
-namespace {
-//! +1 when `profile` starts by speeding up, -1 by braking, 0 by holding its speed (or no phase).
-int start_direction(const Profile& profile) {
-    if (profile.phase_count == 0) return 0;
-    const double j = profile.phases[0].jerk;
-    return j > 0 ? 1 : (j < 0 ? -1 : 0);
-}
-}  // namespace
-
 bool Lookahead::append_merge_spans(std::size_t first, std::size_t count) {
     for (std::size_t i = first; i < first + count; ++i) {
         const WindowSegment& s = segments_[i];
@@ -276,12 +267,16 @@ std::size_t Lookahead::merge_following(Profile& profile) {
         // Not across a stop or an event, and only up to an end speed the passes have fixed.
         if (!(runs_[m - 1].junction_max > 0) || !segments_[first - 1].after.empty()) break;
         const WindowRun& r = runs_[m];
+        // Where run m starts by holding its speed, the boundary's a = 0 costs nothing. Checked
+        // first without planning it (entered at its limit, and no raise can lift it), and for
+        // runs without curved pieces after a block that ends holding its own limit (a corner's
+        // transition between lines): most boundaries of a program of corners end here.
+        const bool raisable = r.cruise_velocity > r.limits.max_velocity * (1.0 + 1e-4);
+        if (m == taken && !raisable && v >= r.limits.max_velocity * (1.0 - 1e-9)) break;
+        if (m == taken && !(r.cruise_velocity > 0) && end_direction(profile) == 0) break;
         double v_end = 0;
         if (!end_speed(r, v, v_end)) break;
         const Profile alone = run_profile(r, first, v, v_end);
-        // Only where the speed changes the same way on both sides of a boundary is its a = 0 a
-        // loss (a staircase); elsewhere one profile over both runs cannot be faster.
-        // Where run m starts by holding its speed, the boundary's a = 0 costs nothing.
         if (m == taken && start_direction(alone) == 0) break;
         plan_s += alone.duration_s();
         v = alone.end_velocity;

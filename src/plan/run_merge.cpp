@@ -15,6 +15,18 @@ constexpr int top_steps = 7;
 
 }  // namespace
 
+int end_direction(const Profile& profile) {
+    if (profile.phase_count == 0) return 0;
+    const double a = profile.phases[static_cast<std::size_t>(profile.phase_count - 1)].acceleration;
+    return a > 0 ? 1 : (a < 0 ? -1 : 0);
+}
+
+int start_direction(const Profile& profile) {
+    if (profile.phase_count == 0) return 0;
+    const double j = profile.phases[0].jerk;
+    return j > 0 ? 1 : (j < 0 ? -1 : 0);
+}
+
 bool merged_profile(double distance, double v_start, double v_end, const MergeRates& rates,
                     const std::vector<CheckedSpan>& spans, Profile& out) {
     bool found = false;

@@ -19,6 +19,12 @@ namespace nckit::plan_detail {
     return check.count > 0 || !check.limits_need_knee;
 }
 
+//! +1 when `profile` ends speeding up (its last phase brings a > 0 back to 0), -1 braking, 0
+//! holding its speed (or no phase).
+[[nodiscard]] int end_direction(const Profile& profile);
+//! +1 when `profile` starts by speeding up, -1 by braking, 0 by holding its speed (or no phase).
+[[nodiscard]] int start_direction(const Profile& profile);
+
 //! The rates a merged profile tries: from the fastest segment's acceleration and jerk down to
 //! the slowest one's.
 struct MergeRates {
