@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 #include <vector>
 
 #include "../../src/plan/lookahead.hpp"
@@ -116,6 +117,57 @@ TEST(RunMerge, MergedProfileKeepsEverySegmentsLimitsByFiniteDifferences) {
         if (boundary && !merged.pieces[on[i - 1]].ends_profile) carried = std::max(carried, std::abs(a));
     }
     EXPECT_GT(carried, 50.0);
+}
+
+// Random chains of lines with limits that change by more than run_spread, stops and a small
+// window: every motion piece keeps its own segment's speed, acceleration and jerk at every
+// sampled instant (the profile's exact state), and merging never makes the plan slower.
+TEST(RunMerge, RandomChainsKeepEachSegmentsLimitsAndNeverSlowDown) {
+    const ProfileLimits sets[] = {{100, 500, 5000}, {60, 300, 2500}, {80, 150, 1200}, {30, 400, 4000}};
+    for (unsigned seed = 1; seed <= 6; ++seed) {
+        double durations[2] = {0, 0};
+        long profile_count[2] = {0, 0};
+        for (const bool merge : {false, true}) {
+            Lookahead lookahead(ProfileKind::scurve, seed % 2 == 0 ? 40 : 10000);
+            lookahead.set_merge_runs(merge);
+            std::mt19937 random(seed);
+            std::uniform_real_distribution<double> unit(0.0, 1.0);
+            std::vector<ProfileLimits> limits;
+            std::vector<TrajectoryPiece> pieces;
+            AxisVector at;
+            for (int i = 0; i < 400; ++i) {
+                AxisVector to = at;
+                to[Axis::X] += 0.05 + 3.0 * unit(random) * unit(random);
+                WindowSegment s;
+                s.path = make_line(at, to);
+                const ProfileLimits& l = sets[static_cast<std::size_t>(unit(random) * 3.999)];
+                const double scale = 0.8 + 0.4 * unit(random);
+                s.limits = {l.max_velocity * scale, l.max_acceleration * scale, l.max_jerk * scale};
+                s.junction_max = unit(random) < 0.02 ? 0.0 : s.limits.max_velocity;
+                s.sequence_number = i;
+                limits.push_back(s.limits);
+                lookahead.add(std::move(s));
+                at = to;
+                for (auto& q = lookahead.output(); !q.empty(); q.pop_front()) pieces.push_back(q.front());
+            }
+            lookahead.finish();
+            for (auto& q = lookahead.output(); !q.empty(); q.pop_front()) pieces.push_back(q.front());
+            for (const TrajectoryPiece& p : pieces) {
+                const ProfileLimits& l = limits[static_cast<std::size_t>(p.sequence_number)];
+                for (int k = 0; k <= 16; ++k) {
+                    const TrajectorySample q = sample(p, p.start_time_s + p.duration_s * k / 16.0);
+                    ASSERT_LE(q.velocity[Axis::X], l.max_velocity * (1 + 1e-9)) << seed << " " << p.sequence_number;
+                    ASSERT_LE(std::abs(q.acceleration[Axis::X]), l.max_acceleration * (1 + 1e-6))
+                        << seed << " " << p.sequence_number;
+                    ASSERT_LE(std::abs(q.jerk[Axis::X]), l.max_jerk * (1 + 1e-6)) << seed << " " << p.sequence_number;
+                }
+            }
+            durations[merge ? 1 : 0] = end_of(pieces);
+            profile_count[merge ? 1 : 0] = profiles(pieces);
+        }
+        EXPECT_LE(durations[1], durations[0] * (1 + 1e-9)) << seed;
+        EXPECT_LT(profile_count[1], profile_count[0]) << seed;  // some runs were merged
+    }
 }
 
 // A curved piece in the middle of a merged span whose axes cannot take the speed change: the
