@@ -152,7 +152,13 @@ PieceCheck piece_check(const DerivativeBounds& b, const MachineConfig& machine, 
     for (const AxisConfig& axis : machine.axes) {
         const std::size_t i = index(axis.axis);
         if (b.d1[i] > 0) v = std::min(v, axis.max_velocity / b.d1[i]);
-        if (!(b.d2[i] > 0 || b.d3[i] > 0)) continue;
+        if (!(b.d2[i] > 0 || b.d3[i] > 0)) {
+            if (b.d1[i] > 0) {
+                check.straight_acceleration = std::min(check.straight_acceleration, axis.max_acceleration / b.d1[i]);
+                check.straight_jerk = std::min(check.straight_jerk, axis.max_jerk / b.d1[i]);
+            }
+            continue;
+        }
         if (check.count == static_cast<int>(check.axes.size())) return PieceCheck{};
         check.axes[static_cast<std::size_t>(check.count++)] = {b.d1[i], b.d2[i], b.d3[i], axis.max_acceleration,
                                                                axis.max_jerk};
@@ -271,6 +277,7 @@ bool split_jerk_limited(const PathSegment& segment, int n, const MachineConfig& 
         piece.limits.max_acceleration = a;
         piece.limits.max_jerk = j;
         piece.check = piece_check(b, machine, feed_mm_s);
+        piece.check.limits_need_knee = true;  // jerk_limited_speed counts the knee
         fastest = std::max(fastest, piece.limits.max_velocity);
     }
     // Pieces slower than the whole segment everywhere (a short arc, a tight jerk budget): keep

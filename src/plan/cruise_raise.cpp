@@ -21,8 +21,13 @@ Motion advance(double v, double a, double j, double x) {
     return {v + x * (a + 0.5 * x * j), a + x * j};
 }
 
-bool part_fits(const PieceCheck& check, double v, double a, double j) {
-    if (v > check.cruise_velocity) return false;
+bool part_fits(const CheckedSpan& span, double v, double a, double j) {
+    if (span.limits != nullptr && span.check->count == 0) {
+        const ProfileLimits& l = *span.limits;
+        return v <= l.max_velocity && a <= l.max_acceleration && j <= l.max_jerk;
+    }
+    const PieceCheck& check = *span.check;
+    if (v > check.cruise_velocity || a > check.straight_acceleration || j > check.straight_jerk) return false;
     for (int k = 0; k < check.count; ++k) {
         const CurvedAxis& c = check.axes[static_cast<std::size_t>(k)];
         if (c.d2 * v * v + c.d1 * a > c.max_acceleration) return false;
@@ -33,7 +38,7 @@ bool part_fits(const PieceCheck& check, double v, double a, double j) {
 
 //! Whether the motion of one phase from time x0 to x1 after its start (state v, a, jerk j at
 //! the phase start) keeps the check, in two halves.
-bool phase_part_fits(const PieceCheck& check, double v, double a, double j, double x0, double x1) {
+bool phase_part_fits(const CheckedSpan& span, double v, double a, double j, double x0, double x1) {
     const double mid = 0.5 * (x0 + x1);
     const double cuts[3] = {x0, mid, x1};
     for (int h = 0; h < 2; ++h) {
@@ -46,7 +51,7 @@ bool phase_part_fits(const PieceCheck& check, double v, double a, double j, doub
             if (x_zero > cuts[h] && x_zero < cuts[h + 1]) v_top = std::max(v_top, advance(v, a, j, x_zero).v);
         }
         const double a_top = std::max(std::abs(s.a), std::abs(e.a));
-        if (!part_fits(check, v_top, a_top, std::abs(j))) return false;
+        if (!part_fits(span, v_top, a_top, std::abs(j))) return false;
     }
     return true;
 }
@@ -74,7 +79,7 @@ bool profile_keeps_pieces(const Profile& profile, const std::vector<CheckedSpan>
             const double phase_end_s = phase_start_s + ph.duration_s;
             const double x0 = std::max(0.0, t0 - phase_start_s);
             const double x1 = std::min(ph.duration_s, t1 - phase_start_s);
-            if (x1 >= x0 && !phase_part_fits(*span.check, v, a, ph.jerk, x0, x1)) return false;
+            if (x1 >= x0 && !phase_part_fits(span, v, a, ph.jerk, x0, x1)) return false;
             if (t1 < phase_end_s || phase + 1 == profile.phase_count) break;
             v = advance(v, a, ph.jerk, ph.duration_s).v;
             phase_start_s = phase_end_s;

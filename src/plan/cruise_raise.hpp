@@ -4,6 +4,7 @@
 // it might see, but where the run's profile holds its speed there, the turning may take the
 // whole acceleration (docs/planner.md, "Speed along an arc (S-curve)").
 #include <array>
+#include <limits>
 #include <vector>
 
 #include "nckit/plan/profile.hpp"
@@ -27,19 +28,30 @@ struct PieceCheck {
     std::array<CurvedAxis, 3> axes{};
     int count = 0;
     double cruise_velocity = 0;  //!< mm/s
+    //! mm/s², mm/s³: the path acceleration and jerk the axes that move but do not curve allow
+    //! (min of amax/d1, jmax/d1; a helix's axis), infinite when none does.
+    double straight_acceleration = std::numeric_limits<double>::infinity();
+    double straight_jerk = std::numeric_limits<double>::infinity();
+    //! The piece's (v, a, j) limits count the S-curve's knee (arc_pieces.cpp): they hold only for
+    //! a profile that reaches a = 0 before its speed tops out, so a profile that carries its
+    //! acceleration into the piece may not be checked against them (run_merge.hpp).
+    bool limits_need_knee = false;
 };
 
-//! One piece of a run as the check sees it: its length along the run and its check.
+//! One piece of a run as the check sees it: its length along the run and its check, or, where
+//! the check knows no curved axis and `limits` is set, its rectangular (v, a, j) limits.
 struct CheckedSpan {
     double length = 0;  //!< mm
     const PieceCheck* check = nullptr;
+    const ProfileLimits* limits = nullptr;
 };
 
 //! Whether `profile` keeps every axis of every span within its limits: each span's time in the
 //! profile is cut at phase boundaries and halved, and on each part the highest speed, |s̈| and
 //! |s⃛| there must satisfy d2·v² + d1·|s̈| <= amax and d3·v³ + 3·d2·v·|s̈| + d1·|s⃛| <= jmax on
-//! every curved axis, and v <= cruise_velocity (bounds taken together, so the test errs on the
-//! safe side).
+//! every curved axis, |s̈| and |s⃛| the straight axes' limits, and v <= cruise_velocity (bounds
+//! taken together, so the test errs on the safe side); a span with `limits` and no curved axis
+//! keeps v, |s̈| and |s⃛| within them instead.
 [[nodiscard]] bool profile_keeps_pieces(const Profile& profile, const std::vector<CheckedSpan>& spans);
 
 //! The fastest profile over `distance` from v_start to v_end with the acceleration and jerk of

@@ -10,6 +10,10 @@ namespace {
 // Plans at least this many new segments at a time: a pass costs about the window's unfinished
 // tail, so batching keeps the cost per segment constant (see add()).
 constexpr std::size_t min_batch = 64;
+//! S-curve runs committed as one profile at most (run_merge.hpp), and how many runs past the
+//! last merge that paid off are still tried.
+constexpr std::size_t max_merged_runs = 32;
+constexpr std::size_t merge_patience = 2;
 
 //! A run's limits are its first segment's, lowered by this factor, and never change: a later
 //! segment joins only when its own limits are at least the run's. Limits that only ever stay
@@ -207,18 +211,8 @@ void Lookahead::plan(std::size_t keep_at_most) {
     // (it is held by its junction limit or by how fast it can speed up, not by the window's
     // stop); when the window is too full, commit as planned anyway.
     while (!runs_.empty()) {
-        const WindowRun& r = runs_.front();
         double v_end = 0;
-        bool final_speed = finished_;
-        if (start_speed_ >= r.bound) {
-            v_end = r.bound;
-            final_speed = final_speed || (final_bound_commits_ ? r.bound_final : r.bound >= r.junction_max);
-        } else {
-            const double reachable = max_end_speed(r.length, start_speed_, r.limits, kind_);
-            v_end = std::min(r.bound, reachable);
-            final_speed = final_speed || (final_bound_commits_ && r.bound_final) ||
-                          r.bound >= std::min(r.junction_max, reachable);
-        }
+        const bool final_speed = end_speed(runs_.front(), start_speed_, v_end);
         if (!final_speed && segments_.size() <= keep_at_most) break;
         commit_front(v_end);
     }
@@ -226,16 +220,106 @@ void Lookahead::plan(std::size_t keep_at_most) {
     dirty_from_ = runs_.size();
 }
 
-void Lookahead::commit_front(double v_end) {
-    const WindowRun run = runs_.front();
-    runs_.pop_front();
-    if (dirty_from_ > 0) --dirty_from_;
-    Profile profile = plan_profile(run.length, start_speed_, v_end, run.limits, kind_);
+bool Lookahead::end_speed(const WindowRun& r, double v_start, double& v_end) const {
+    if (v_start >= r.bound) {
+        v_end = r.bound;
+        return finished_ || (final_bound_commits_ ? r.bound_final : r.bound >= r.junction_max);
+    }
+    const double reachable = max_end_speed(r.length, v_start, r.limits, kind_);
+    v_end = std::min(r.bound, reachable);
+    return finished_ || (final_bound_commits_ && r.bound_final) || r.bound >= std::min(r.junction_max, reachable);
+}
+
+Profile Lookahead::run_profile(const WindowRun& r, std::size_t first, double v_start, double v_end) {
+    const Profile profile = plan_profile(r.length, v_start, v_end, r.limits, kind_);
     // A run of curved pieces may go faster where its profile keeps them (cruise_raise.hpp).
-    if (kind_ == ProfileKind::scurve && run.cruise_velocity > run.limits.max_velocity * (1.0 + 1e-4)) {
-        spans_.clear();
-        for (std::size_t i = 0; i < run.count; ++i) spans_.push_back({segments_[i].path.length, &segments_[i].check});
-        profile = raised_profile(profile, run.length, run.limits, run.cruise_velocity, spans_);
+    if (kind_ != ProfileKind::scurve || !(r.cruise_velocity > r.limits.max_velocity * (1.0 + 1e-4))) return profile;
+    spans_.clear();
+    for (std::size_t i = first; i < first + r.count; ++i) {
+        spans_.push_back({segments_[i].path.length, &segments_[i].check});
+    }
+    return raised_profile(profile, r.length, r.limits, r.cruise_velocity, spans_);
+}
+
+bool Lookahead::append_merge_spans(std::size_t first, std::size_t count) {
+    for (std::size_t i = first; i < first + count; ++i) {
+        const WindowSegment& s = segments_[i];
+        if (!mergeable(s.check)) return false;
+        merge_spans_.push_back({s.path.length, &s.check, &s.limits});
+    }
+    return true;
+}
+
+std::size_t Lookahead::merge_following(Profile& profile) {
+    const WindowRun& front = runs_.front();
+    merge_spans_.clear();
+    if (!append_merge_spans(0, front.count)) return 1;
+    MergeRates rates{front.limits, front.limits};
+    rates.widest.max_velocity = std::max(front.limits.max_velocity, front.cruise_velocity);
+    MergeRates front_rates = rates;
+    front_rates.curved = front.cruise_velocity > 0;
+    double plan_s = profile.duration_s();  // the best plan of the runs taken so far and the ones after
+    double v = profile.end_velocity;
+    double length = front.length;
+    std::size_t first = front.count;  // segment index of run m
+    std::size_t taken = 1;
+    for (std::size_t m = 1; m < runs_.size() && m < max_merged_runs; ++m) {
+        // Not across a stop or an event, and only up to an end speed the passes have fixed.
+        if (!(runs_[m - 1].junction_max > 0) || !segments_[first - 1].after.empty()) break;
+        const WindowRun& r = runs_[m];
+        // Where run m starts by holding its speed, the boundary's a = 0 costs nothing. Checked
+        // first without planning it (entered at its limit, and no raise can lift it), and for
+        // runs without curved pieces after a block that ends holding its own limit (a corner's
+        // transition between lines): most boundaries of a program of corners end here.
+        const bool raisable = r.cruise_velocity > r.limits.max_velocity * (1.0 + 1e-4);
+        if (m == taken && !raisable && v >= r.limits.max_velocity * (1.0 - 1e-9)) break;
+        if (m == taken && !(r.cruise_velocity > 0) && end_direction(profile) == 0) break;
+        double v_end = 0;
+        if (!end_speed(r, v, v_end)) break;
+        const Profile alone = run_profile(r, first, v, v_end);
+        if (m == taken && start_direction(alone) == 0) break;
+        plan_s += alone.duration_s();
+        v = alone.end_velocity;
+        if (!append_merge_spans(first, r.count)) break;
+        first += r.count;
+        length += r.length;
+        ProfileLimits& w = rates.widest;
+        w.max_velocity = std::max({w.max_velocity, r.limits.max_velocity, r.cruise_velocity});
+        w.max_acceleration = std::max(w.max_acceleration, r.limits.max_acceleration);
+        w.max_jerk = std::max(w.max_jerk, r.limits.max_jerk);
+        ProfileLimits& t = rates.tightest;
+        t.max_acceleration = std::min(t.max_acceleration, r.limits.max_acceleration);
+        t.max_jerk = std::min(t.max_jerk, r.limits.max_jerk);
+        Profile merged;
+        if (merged_profile(length, start_speed_, v, rates, merge_spans_, merged) &&
+            merged.duration_s() < plan_s * (1.0 - 1e-9)) {
+            profile = merged;
+            plan_s = merged.duration_s();
+            taken = m + 1;
+        } else if (m + 1 - taken >= merge_patience) {
+            break;
+        }
+    }
+    // A run of curved pieces alone: its own profile with higher rates, where its pieces allow.
+    if (taken == 1 && front_rates.curved) {
+        merge_spans_.resize(front.count);
+        Profile faster;
+        if (merged_profile(front.length, start_speed_, profile.end_velocity, front_rates, merge_spans_, faster) &&
+            faster.duration_s() < profile.duration_s() * (1.0 - 1e-9)) {
+            profile = faster;
+        }
+    }
+    return taken;
+}
+
+void Lookahead::commit_front(double v_end) {
+    Profile profile = run_profile(runs_.front(), 0, start_speed_, v_end);
+    const std::size_t taken = kind_ == ProfileKind::scurve && merge_runs_ ? merge_following(profile) : 1;
+    std::size_t count = 0;
+    for (std::size_t k = 0; k < taken; ++k) {
+        count += runs_.front().count;
+        runs_.pop_front();
+        if (dirty_from_ > 0) --dirty_from_;
     }
     const double total_s = profile.duration_s();
     start_speed_ = profile.end_velocity;
@@ -243,9 +327,9 @@ void Lookahead::commit_front(double v_end) {
     double offset_mm = 0;
     double offset_s = 0;
     const double run_start_s = clock_s_;
-    for (std::size_t i = 0; i < run.count; ++i) {
+    for (std::size_t i = 0; i < count; ++i) {
         WindowSegment& s = segments_.front();
-        const bool last = i + 1 == run.count;
+        const bool last = i + 1 == count;
         const double end_mm = offset_mm + s.path.length;
         const double end_s = last ? total_s : std::max(offset_s, walker.time_at(end_mm));
         TrajectoryPiece& piece = output_.push_back_slot();

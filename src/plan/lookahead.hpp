@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cruise_raise.hpp"
+#include "run_merge.hpp"
 #include "nckit/plan/spindle_model.hpp"
 #include "nckit/plan/trajectory.hpp"
 
@@ -140,12 +141,26 @@ public:
     //! Tests only: commit a run only when its own junction limit or its speed-up holds its end
     //! speed (or the window overflows), not as soon as a junction limit further on does.
     void set_final_bound_commits(bool on) { final_bound_commits_ = on; }
+    //! Tests only: plan every run on its own, with zero acceleration at each boundary.
+    void set_merge_runs(bool on) { merge_runs_ = on; }
     //! Segments in the window now (tests: how far planning lags behind the input).
     [[nodiscard]] std::size_t window_segments() const { return segments_.size(); }
 
 private:
     void plan(std::size_t keep_at_most);
     void commit_front(double v_end);
+    //! The end speed the forward pass gives run `r` entered at v_start (in v_end), and whether
+    //! it is final: no later segment can change it.
+    [[nodiscard]] bool end_speed(const WindowRun& r, double v_start, double& v_end) const;
+    //! The profile of `r` alone, its segments from index `first` on: planned, then raised where
+    //! its pieces allow (cruise_raise.hpp).
+    [[nodiscard]] Profile run_profile(const WindowRun& r, std::size_t first, double v_start, double v_end);
+    //! S-curve: how many runs from the front to commit as one profile (`profile`, on entry the
+    //! front run's own; replaced by a merged one where that is faster, run_merge.hpp).
+    [[nodiscard]] std::size_t merge_following(Profile& profile);
+    //! Appends the checks of `count` segments from index `first` to merge_spans_; false when
+    //! one of them may not lie inside a merged profile.
+    [[nodiscard]] bool append_merge_spans(std::size_t first, std::size_t count);
     [[nodiscard]] bool joins_last_run(const WindowSegment& segment) const;
     //! S-curve only: whether the last run can take a segment whose limits are slightly below
     //! its own by lowering its limits to the segment's (`lowered`) without lowering any bound.
@@ -160,7 +175,8 @@ private:
 
     ProfileKind kind_;
     std::size_t window_;
-    std::vector<CheckedSpan> spans_;  //!< commit_front's, reused
+    std::vector<CheckedSpan> spans_;        //!< commit_front's, reused
+    std::vector<CheckedSpan> merge_spans_;  //!< merge_following's, reused
     RingQueue<WindowSegment> segments_;
     RingQueue<WindowRun> runs_;
     RingQueue<TrajectoryPiece> output_;
@@ -177,6 +193,7 @@ private:
     std::size_t dirty_from_ = 0;
     bool full_passes_ = false;
     bool final_bound_commits_ = true;
+    bool merge_runs_ = true;
 };
 
 }  // namespace nckit::plan_detail

@@ -19,10 +19,12 @@ using plan_detail::WindowEvent;
 using plan_detail::WindowSegment;
 
 std::vector<TrajectoryPiece> run_window(ProfileKind kind, std::size_t window, unsigned seed, bool full,
-                                        bool final_bound_commits = true, std::size_t* most_in_window = nullptr) {
+                                        bool final_bound_commits = true, std::size_t* most_in_window = nullptr,
+                                        bool merge_runs = true) {
     Lookahead lookahead(kind, window);
     lookahead.set_full_passes(full);
     lookahead.set_final_bound_commits(final_bound_commits);
+    lookahead.set_merge_runs(merge_runs);
     std::mt19937_64 random(seed);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     // A few limit sets, each also slightly perturbed, so runs join, lower and break.
@@ -100,8 +102,10 @@ TEST(Lookahead, RunsHeldByALaterJunctionLimitLeaveTheWindowEarly) {
         for (unsigned seed : {1U, 2U, 3U}) {
             std::size_t early_most = 0;
             std::size_t late_most = 0;
-            const auto early = run_window(kind, 10000, seed, false, true, &early_most);
-            const auto late = run_window(kind, 10000, seed, false, false, &late_most);
+            // Runs merged into one profile (run_merge.hpp) depend on which later runs are in the
+            // window when a run leaves it, so the end speeds are compared without merging.
+            const auto early = run_window(kind, 10000, seed, false, true, &early_most, false);
+            const auto late = run_window(kind, 10000, seed, false, false, &late_most, false);
             ASSERT_EQ(early.size(), late.size());
             for (std::size_t i = 0; i < early.size(); ++i) {
                 ASSERT_EQ(early[i].start_time_s, late[i].start_time_s) << i;
@@ -119,10 +123,12 @@ TEST(Lookahead, RunsHeldByALaterJunctionLimitLeaveTheWindowEarly) {
 // A chain of lines and transitions between them, speeding up from rest: under a jerk limit their
 // acceleration and jerk limits differ by more than run_spread from one to the next (a line takes
 // the axis's acceleration, a transition keeps a share for its turning). They share one run, so
-// the path acceleration is not brought back to 0 at every vertex; arcs' pieces keep run_spread.
+// the path acceleration is not brought back to 0 at every vertex; arcs' pieces keep run_spread
+// (and, with the runs merged at commit, still get one profile where that is faster).
 TEST(Lookahead, StraightChainsShareARunAcrossDifferentRateLimits) {
-    auto pieces_of = [](SegmentShape odd_shape) {
+    auto pieces_of = [](SegmentShape odd_shape, bool merge_runs = false) {
         Lookahead lookahead(ProfileKind::scurve, 10000);
+        lookahead.set_merge_runs(merge_runs);
         AxisVector at;
         for (int i = 0; i < 40; ++i) {
             AxisVector to = at;
@@ -156,6 +162,12 @@ TEST(Lookahead, StraightChainsShareARunAcrossDifferentRateLimits) {
     EXPECT_EQ(profiles(curved), 40);
     // One run at the lower limits is faster than 40 runs that each start and end at a = 0.
     EXPECT_LT(duration(straight), 0.8 * duration(curved));
+    // Merged at commit, the 40 runs of the curved variant become a few profiles that carry the
+    // acceleration across the runs' boundaries.
+    const auto merged = pieces_of(SegmentShape::arc, true);
+    EXPECT_LT(profiles(merged), 5);
+    EXPECT_LT(duration(merged), 0.8 * duration(curved));
+    EXPECT_EQ(pieces_of(SegmentShape::line, true).size(), straight.size());
 }
 
 }  // namespace

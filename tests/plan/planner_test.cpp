@@ -157,9 +157,12 @@ TEST(Planner, ArcSpeedKeepsNormalAccelerationWithinTheLimit) {
     // (S-curve)"): above the whole-arc speed with half of a for the turning (v²/r <= a/2:
     // sqrt(250) mm/s), below the highest pointwise limit, at 45° where both axes share the
     // turning (v²·cos 45°/r <= a: sqrt(500·√2) mm/s). Where a run holds its speed it may pass
-    // sqrt(500), the limit where one axis takes all of a (cruise_raise.hpp).
-    EXPECT_GT(p.stats.max_xyz_speed, 1.2 * std::sqrt(250.0));
+    // sqrt(500), the limit where one axis takes all of a (cruise_raise.hpp). A run of pieces may
+    // take higher rates where its pieces allow (run_merge.hpp): it then reaches a lower peak
+    // sooner, 18.87 mm/s and 0.396 s (before that 22.28 mm/s and 0.418 s).
+    EXPECT_GT(p.stats.max_xyz_speed, 1.15 * std::sqrt(250.0));
     EXPECT_LE(p.stats.max_xyz_speed, std::sqrt(500.0 * std::sqrt(2.0)));
+    EXPECT_LT(p.pieces.back().start_time_s + p.pieces.back().duration_s, 0.40);
 }
 
 TEST(Planner, WaitingMcodesStopOthersPassAtSpeed) {
