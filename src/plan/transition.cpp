@@ -4,6 +4,7 @@
 #include <cmath>
 #include <utility>
 
+#include "chain_state.hpp"
 #include "chord_distance.hpp"
 #include "ramp_transition.hpp"
 
@@ -283,8 +284,12 @@ bool single_quintic(const PathSegment& before, double before_room, const PathSeg
             // the two transitions that meet on it (see ChainStart).
             const double length = 0.5 * (distance3(out.start.position, out.end.position) + trim_a + trim_b);
             PathPoint a = out.start;
+            const ChainMidState mid =
+                chain_mid_state(chain->entry_start_d1, chain->entry_length, {a.d1[0], a.d1[1], a.d1[2]}, 2 * trim_a,
+                                {out.end.d1[0], out.end.d1[1], out.end.d1[2]}, length);
             for (std::size_t i = 0; i < 3; ++i) {
-                a.d2[i] = (out.end.d1[i] - chain->entry_start_d1[i]) / (chain->entry_length + length);
+                a.d1[i] = mid.d1[i];
+                a.d2[i] = mid.d2[i];
             }
             if (build(out, a, out.end, tolerance_mm, out.curve, out.deviation_mm, true)) {
                 out.start = a;
