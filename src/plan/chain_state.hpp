@@ -1,38 +1,44 @@
 #pragma once
 // The state at the middle of a line of a CAM chain where two chained transitions meet
-// (transition.hpp, ChainStart): the direction and curvature of the smooth curve the chain
+// (transition.hpp, ChainStart): the point, direction and curvature of the smooth curve the chain
 // samples, estimated from the directions of the line and its two neighbours.
 //
-// Why not the line's own direction: the middles of the chords of a curve g lie on the curve
-// G = g + h²·g''/8 (h the chord length), whose direction there is g' + h²·g'''/8, while the
-// chord's direction is g' + h²·g'''/24. A quintic given the chord's direction at both of its
-// ends is off by h²·g'''/12 at each, on the same side, and bends to make up for it: its third
-// derivative gains 60·(h²·g'''/12)/h² = 5·g'''. On the 0.5 mm rows of the 3D raster
-// (g''' = 0.0039 /mm²) that was 0.020 /mm² where the surface has 0.0039, and the jerk term
-// q'''·v³ held the rows to 43.5 mm/s at j 5,000 (docs/planner.md, "CAM polylines").
+// Why not the line's own middle and direction: the middle of a chord of length h of a curve g
+// lies h²·g''/8 inside the curve, and the chord's direction is g' + h²·g'''/24. With the middles
+// as the meeting points, a quintic given the chords' directions at both of its ends is off by
+// h²·g'''/12 at each, on the same side, and bends to make up for it: its third derivative gained
+// 60·(h²·g'''/12)/h² = 5·g'''. On the 0.5 mm rows of the 3D raster (g''' = 0.0039 /mm²) that was
+// 0.020 /mm², and the jerk term q'''·v³ held the rows to 43.5 mm/s at j 5,000. Where chords of
+// different lengths meet (a merged chord of 0.565 mm after a written one of 0.0628 mm on the
+// circle r 20) their middles lie 2 µm and 0.025 µm inside the circle: a step sideways that the
+// quintic between them pays in its third derivative. So the meeting point is moved onto the
+// curve and given the curve's direction there (docs/planner.md, "CAM polylines").
 #include <array>
 #include <cmath>
+#include <cstddef>
 
 namespace nckit::plan_detail {
 
 struct ChainMidState {
-    std::array<double, 3> d1{};  //!< unit direction dq/ds
-    std::array<double, 3> d2{};  //!< curvature vector d²q/ds², normal to d1 (1/mm)
+    std::array<double, 3> offset{};  //!< mm, from the line's middle to the curve
+    std::array<double, 3> d1{};      //!< unit direction dq/ds there
+    std::array<double, 3> d2{};      //!< curvature vector d²q/ds², normal to d1 (1/mm)
 };
 
 //! At the middle of a line of length `line_mm` in direction `line_d1`, between the chord
-//! directions `before_d1` (the line before, whose middle lies `before_mm` back along the
-//! chain) and `after_d1` (the line after, `after_mm` on): direction g' + h²·g'''/12 with g'''
-//! from the second difference of the three directions, and the curvature (after − before) /
-//! (before_mm + after_mm) with its part along that direction removed (|q'| stays 1 to first
-//! order, so the quintics meeting there keep their parameter speed). A straight or circular
-//! chain of equal lines keeps the line's direction (a circle's g''' lies along the tangent).
+//! directions `before_d1` (the line before, whose middle lies `before_mm` back along the chain)
+//! and `after_d1` (the line after, `after_mm` on): the curvature g'' = (after − before) /
+//! (before_mm + after_mm) without its part along the direction (|q'| stays 1 to first order, so
+//! the quintics meeting there keep their parameter speed), the point of the curve at −h²·g''/8
+//! from the middle, and the direction there, chord − h²·g'''/24, with g''' from the second
+//! difference of the three directions. A straight chain keeps its line's middle and direction;
+//! a circle of equal chords its chords' directions (a circle's g''' lies along its tangent).
 [[nodiscard]] inline ChainMidState chain_mid_state(const std::array<double, 3>& before_d1, double before_mm,
                                                    const std::array<double, 3>& line_d1, double line_mm,
                                                    const std::array<double, 3>& after_d1, double after_mm) {
     ChainMidState s;
     const double spacing = 0.5 * (before_mm + after_mm);
-    const double correction = line_mm * line_mm / 12.0;
+    const double correction = -line_mm * line_mm / 24.0;
     double norm2 = 0;
     for (std::size_t i = 0; i < 3; ++i) {
         const double third =
@@ -47,7 +53,10 @@ struct ChainMidState {
         s.d2[i] = (after_d1[i] - before_d1[i]) / (before_mm + after_mm);
         along += s.d2[i] * s.d1[i];
     }
-    for (std::size_t i = 0; i < 3; ++i) s.d2[i] -= along * s.d1[i];
+    for (std::size_t i = 0; i < 3; ++i) {
+        s.d2[i] -= along * s.d1[i];
+        s.offset[i] = -line_mm * line_mm / 8.0 * s.d2[i];
+    }
     return s;
 }
 

@@ -27,6 +27,8 @@ bool join_by_transition(PendingMotion& p, PendingMotion& next, double tolerance,
         // p is eaten by its two transitions: they meet at its middle, in its direction, with
         // the curvature of the turn between their outer ends (transition.hpp). The one into p
         // is rebuilt to end there; failing the tolerance, both stay as built (no curvature).
+        // The meeting point lies on the curve the chain samples (chain_state.hpp), not on p.
+        for (std::size_t i = 0; i < 3; ++i) p.entry->end.position[i] = t.start.position[i];
         const auto entry = with_end_states(*p.entry, xyz(p.entry->start.d1), xyz(p.entry->start.d2), xyz(t.start.d1),
                                            xyz(t.start.d2), tolerance);
         if (entry) {

@@ -288,6 +288,7 @@ bool single_quintic(const PathSegment& before, double before_room, const PathSeg
                 chain_mid_state(chain->entry_start_d1, chain->entry_length, {a.d1[0], a.d1[1], a.d1[2]}, 2 * trim_a,
                                 {out.end.d1[0], out.end.d1[1], out.end.d1[2]}, length);
             for (std::size_t i = 0; i < 3; ++i) {
+                a.position[i] += mid.offset[i];
                 a.d1[i] = mid.d1[i];
                 a.d2[i] = mid.d2[i];
             }

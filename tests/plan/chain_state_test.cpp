@@ -57,8 +57,8 @@ double quintic_d3_z(const std::vector<Chord>& c, std::size_t k, bool corrected) 
     const auto sa = state_at(c, k);
     const auto sb = state_at(c, k + 1);
     for (std::size_t i = 0; i < 3; ++i) {
-        a.position[i] = c[k].middle[i];
-        b.position[i] = c[k + 1].middle[i];
+        a.position[i] = c[k].middle[i] + (corrected ? sa.offset[i] : 0.0);
+        b.position[i] = c[k + 1].middle[i] + (corrected ? sb.offset[i] : 0.0);
         a.d1[i] = corrected ? sa.d1[i] : c[k].direction[i];
         b.d1[i] = corrected ? sb.d1[i] : c[k + 1].direction[i];
         a.d2[i] = sa.d2[i];
@@ -78,6 +78,7 @@ TEST(ChainState, StraightChainKeepsItsDirectionAndNoCurvature) {
     for (std::size_t i = 0; i < 3; ++i) {
         EXPECT_NEAR(s.d1[i], c[2].direction[i], 1e-14);
         EXPECT_NEAR(s.d2[i], 0.0, 1e-14);
+        EXPECT_NEAR(s.offset[i], 0.0, 1e-14);
     }
 }
 
@@ -93,6 +94,11 @@ TEST(ChainState, CircleOfEqualChordsKeepsTheChordDirection) {
     const auto s = state_at(c, 2);
     for (std::size_t i = 0; i < 3; ++i) EXPECT_NEAR(s.d1[i], c[2].direction[i], 1e-12);
     EXPECT_NEAR(std::hypot(s.d2[0], s.d2[1]), 1 / r, 1e-6);
+    // The middle, 22 nm inside the circle (h²/(8r)), moves out onto it to within 0.1 nm.
+    Vec3 on{};
+    for (std::size_t i = 0; i < 3; ++i) on[i] = c[2].middle[i] + s.offset[i];
+    EXPECT_NEAR(std::hypot(on[0], on[1] - r), r, 1e-10);
+    EXPECT_GT(r - std::hypot(c[2].middle[0], c[2].middle[1] - r), 2e-5);
     EXPECT_NEAR(dot(s.d1, s.d2), 0.0, 1e-15);
 }
 
@@ -115,9 +121,9 @@ TEST(ChainState, CurvatureIsNormalToTheDirection) {
 
 TEST(ChainState, QuinticsFollowTheThirdDerivativeOfTheSampledCurve) {
     // The rows of the 3D raster: 0.5 mm chords of z = 2 sin(x/8), whose third derivative is at
-    // most 2/512 = 0.0039 /mm². With the chords' own directions the quintics between their
-    // middles reached about five times that (h²·g'''/12 off at both ends); with the state of
-    // chain_mid_state they stay within 1.5 times it.
+    // most 2/512 = 0.0039 /mm². With the chords' own middles and directions the quintics between
+    // them reached about five times that (h²·g'''/12 off at both ends); with the points and
+    // directions of chain_mid_state they stay within 1.5 times it.
     const double g3 = 2.0 / 512.0;
     std::vector<Vec3> points;
     for (int k = 0; k <= 100; ++k) {
