@@ -207,7 +207,12 @@ double hull_verdict(const PathSegment& curve, const Transition& t, const AxisVec
         for (std::size_t i = 0; i < 3; ++i) along += 5 * (ctrl[k + 1][i] - ctrl[k][i]) / l * mean[i] * inv;
         if (!(along >= min_parametric_speed)) return -1;
     }
-    return far + std::sqrt(h2);
+    // A and B off their lines (a chained meeting point moved onto the curve, chain_state.hpp):
+    // the chord A–B and its height move by at most that much each.
+    const AxisVector& before_end = end_point(t.replaced_before);
+    const double off_a = to_chord(a, t.replaced_before.origin, before_end);
+    const double off_b = to_chord(b, c, end_point(t.replaced_after));
+    return far + std::sqrt(h2) + 2 * std::max(off_a, off_b);
 }
 
 //! Builds the curve between the states and measures it against the replaced path; false when it
