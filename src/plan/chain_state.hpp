@@ -33,18 +33,45 @@ struct ChainMidState {
 //! from the middle, and the direction there, chord − h²·g'''/24, with g''' from the second
 //! difference of the three directions. A straight chain keeps its line's middle and direction;
 //! a circle of equal chords its chords' directions (a circle's g''' lies along its tangent).
+//! The chords turn by more than chain_state_max_turn (the length of the difference of their unit
+//! directions, about the angle; chain_smoother.hpp's corner), or the direction would turn by more
+//! than chain_state_max_correction: a corner or a zig-zag, which samples no smooth curve. There
+//! the line's middle and direction stay, with the curvature of the turn between the neighbours:
+//! moving the meeting point would only make the transitions' tolerance checks fail (each failure
+//! another build). On a smooth curve the correction is h²·g'''/24 (4e-5 rad on the raster's
+//! rows); on the zig-zag of `BM_PlannerZigZagSCurve` (0.3 rad at every vertex) about 0.025 rad.
+inline constexpr double chain_state_max_turn = 0.25;
+inline constexpr double chain_state_max_correction = 1e-3;
+
 [[nodiscard]] inline ChainMidState chain_mid_state(const std::array<double, 3>& before_d1, double before_mm,
                                                    const std::array<double, 3>& line_d1, double line_mm,
                                                    const std::array<double, 3>& after_d1, double after_mm) {
     ChainMidState s;
     const double spacing = 0.5 * (before_mm + after_mm);
     const double correction = -line_mm * line_mm / 24.0;
+    double turn_before2 = 0;
+    double turn_after2 = 0;
+    double moved2 = 0;
     double norm2 = 0;
+    double same_way = 0;
     for (std::size_t i = 0; i < 3; ++i) {
+        same_way += (line_d1[i] - before_d1[i]) * (after_d1[i] - line_d1[i]);
+        turn_before2 += (line_d1[i] - before_d1[i]) * (line_d1[i] - before_d1[i]);
+        turn_after2 += (after_d1[i] - line_d1[i]) * (after_d1[i] - line_d1[i]);
         const double third =
             ((after_d1[i] - line_d1[i]) / after_mm - (line_d1[i] - before_d1[i]) / before_mm) / spacing;
         s.d1[i] = line_d1[i] + correction * third;
+        moved2 += correction * third * correction * third;
         norm2 += s.d1[i] * s.d1[i];
+    }
+    constexpr double most2 = chain_state_max_turn * chain_state_max_turn;
+    constexpr double moved_most2 = chain_state_max_correction * chain_state_max_correction;
+    if (turn_before2 > most2 || turn_after2 > most2 || (!(same_way > 0) && moved2 > moved_most2)) {
+        for (std::size_t i = 0; i < 3; ++i) {
+            s.d1[i] = line_d1[i];
+            s.d2[i] = (after_d1[i] - before_d1[i]) / (before_mm + after_mm);
+        }
+        return s;
     }
     const double inv = 1.0 / std::sqrt(norm2);
     double along = 0;

@@ -149,8 +149,11 @@ double hull_verdict(const PathSegment& curve, const Transition& t, const AxisVec
         along_a += (a[i] - c[i]) * t.replaced_before.rate[i];
         along_b += (b[i] - c[i]) * t.replaced_after.rate[i];
     }
-    // The feet lie on the replaced pieces (A' before C, B' after it).
-    if (!(along_a <= 0 && -along_a <= t.replaced_before.length && along_b >= 0 && along_b <= t.replaced_after.length)) {
+    // The feet lie on the replaced pieces, A' before C and B' after it (up to rounding: a
+    // nanometre past a piece's end, which the bound adds).
+    constexpr double slack_mm = 1e-9;
+    if (!(along_a <= slack_mm && -along_a <= t.replaced_before.length + slack_mm && along_b >= -slack_mm &&
+          along_b <= t.replaced_after.length + slack_mm)) {
         return -1;
     }
     std::array<double, 3> ab{};
@@ -233,7 +236,7 @@ double hull_verdict(const PathSegment& curve, const Transition& t, const AxisVec
         for (std::size_t i = 0; i < 3; ++i) along += 5 * (ctrl[k + 1][i] - ctrl[k][i]) / l * mean[i] * inv;
         if (!(along >= min_parametric_speed)) return -1;
     }
-    return far + std::sqrt(h2) + off;
+    return far + std::sqrt(h2) + off + slack_mm;
 }
 
 //! Builds the curve between the states and measures it against the replaced path; false when it

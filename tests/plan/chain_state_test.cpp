@@ -102,6 +102,19 @@ TEST(ChainState, CircleOfEqualChordsKeepsTheChordDirection) {
     EXPECT_NEAR(dot(s.d1, s.d2), 0.0, 1e-15);
 }
 
+TEST(ChainState, AZigZagKeepsItsMiddlesAndDirections) {
+    // A zig-zag (chords at ±0.1 rad, turning 0.2 rad each way) samples no smooth curve: the meeting
+    // point stays the middle, in the line's direction (moving it only fails tolerance checks).
+    std::vector<Vec3> points;
+    for (int k = 0; k < 6; ++k) points.push_back({0.05 * k, 0.005 * (k % 2), 0});
+    const auto c = chords(points);
+    const auto s = state_at(c, 2);
+    for (std::size_t i = 0; i < 3; ++i) {
+        EXPECT_EQ(s.d1[i], c[2].direction[i]);
+        EXPECT_EQ(s.offset[i], 0.0);
+    }
+}
+
 TEST(ChainState, CurvatureIsNormalToTheDirection) {
     // Unequal lines on a curve whose curvature changes: the curvature vector loses its part
     // along the direction (|q'| stays 1 where two quintics meet).
