@@ -29,6 +29,7 @@ struct PendingMotion {
     //! join's transition eats the whole of this motion, both meet with a common curvature.
     std::optional<Transition> entry;
     double entry_feed_mm_s = 0;
+    double entry_tolerance_mm = 0;  //!< mm, the tolerance it was built within
     SourceLocation entry_where;
     std::int64_t entry_number = -1;
 };
@@ -38,8 +39,16 @@ struct PendingMotion {
 //! trimmed and the transition becomes next.entry (fed at the lower of the two feeds, located at
 //! p); p is then ready to be released. False, with both untouched, when no transition keeps the
 //! tolerance. With `turning` (jerk-limited plans) a tangent join of an arc may get a ramp
-//! transition (make_transition).
+//! transition (make_transition). When `starts_at_rest` (p follows a stop), a short line p before a
+//! line may be taken whole into the transition, which then leaves p's start already turning.
 [[nodiscard]] bool join_by_transition(PendingMotion& p, PendingMotion& next, double tolerance,
-                                      const TurningLimits* turning = nullptr);
+                                      const TurningLimits* turning = nullptr, bool starts_at_rest = false);
+
+//! Before a stop, the rest of a line p that its entry transition (from a line) trimmed is taken
+//! into that transition, which then ends at p's end with the curvature it started with: at rest
+//! the curvature is free, so a chain of CAM lines ending there does not ramp its curvature down
+//! to zero at the last line's middle. Within the tolerance the transition was built with; false,
+//! with p untouched, when that keeps no tolerance.
+[[nodiscard]] bool end_at_rest(PendingMotion& p);
 
 }  // namespace nckit::plan_detail

@@ -23,12 +23,8 @@ namespace nckit {
 using plan_detail::WindowEvent;
 using plan_detail::WindowSegment;
 
-namespace {
-
 // A trimmed line shorter than this is dropped; the blends on both sides then meet tangentially.
 constexpr double min_trimmed_length = 1e-12;
-
-}  // namespace
 
 struct Planner::Impl {
     using Pending = plan_detail::PendingMotion;
@@ -65,8 +61,9 @@ struct Planner::Impl {
     void release_pending(bool stop) {
         if (!pending) return;
         Pending& p = *pending;
+        const bool eaten = stop && kind == ProfileKind::scurve && plan_detail::end_at_rest(p);
         if (p.entry) {
-            window_feed.add_transition(*p.entry, p.entry_feed_mm_s, {p.entry_where, p.entry_number});
+            window_feed.add_transition(*p.entry, p.entry_feed_mm_s, {p.entry_where, p.entry_number}, eaten);
             p.entry.reset();
         }
         if (!(p.path.length > min_trimmed_length)) {
@@ -93,6 +90,7 @@ struct Planner::Impl {
         s.sequence_number = -1;
         s.entry.reset();
         s.entry_feed_mm_s = 0;
+        s.entry_tolerance_mm = 0;
         s.entry_where = SourceLocation{};
         s.entry_number = -1;
         return s;
@@ -138,7 +136,8 @@ struct Planner::Impl {
     //! transition within the tolerance (pending_motion.hpp).
     bool transition(Pending& p, Pending& next, double tolerance) {
         const plan_detail::TurningLimits* limits = kind == ProfileKind::scurve ? &turning : nullptr;
-        if (!plan_detail::join_by_transition(p, next, tolerance, limits)) return false;
+        const bool from_rest = window_feed.at_rest() && !p.entry;  // p follows a stop
+        if (!plan_detail::join_by_transition(p, next, tolerance, limits, from_rest)) return false;
         release_pending(false);
         return true;
     }

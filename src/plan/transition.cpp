@@ -4,6 +4,7 @@
 #include <cmath>
 #include <utility>
 
+#include "chain_state.hpp"
 #include "chord_distance.hpp"
 #include "ramp_transition.hpp"
 
@@ -139,15 +140,37 @@ namespace {
 double hull_verdict(const PathSegment& curve, const Transition& t, const AxisVector& a, const AxisVector& b) {
     if (t.replaced_before.shape != SegmentShape::line || t.replaced_after.shape != SegmentShape::line) return -1;
     const AxisVector& c = t.replaced_after.origin;  // a line's start
+    // A chained meeting point may lie off its line (moved onto the curve, chain_state.hpp): the
+    // height is taken over the chord between the feet A', B' on the lines, and every point of
+    // the chord A–B lies within the larger offset of the chord A'–B'.
+    double along_a = 0;
+    double along_b = 0;
+    for (std::size_t i = 0; i < 3; ++i) {
+        along_a += (a[i] - c[i]) * t.replaced_before.rate[i];
+        along_b += (b[i] - c[i]) * t.replaced_after.rate[i];
+    }
+    // The feet lie on the replaced pieces, A' before C and B' after it (up to rounding: a
+    // nanometre past a piece's end, which the bound adds).
+    constexpr double slack_mm = 1e-9;
+    if (!(along_a <= slack_mm && -along_a <= t.replaced_before.length + slack_mm && along_b >= -slack_mm &&
+          along_b <= t.replaced_after.length + slack_mm)) {
+        return -1;
+    }
     std::array<double, 3> ab{};
     std::array<double, 3> ac{};
     std::array<double, 3> bc{};
-    double ab2 = 0;
+    double feet2 = 0;
+    double off_a2 = 0;
+    double off_b2 = 0;
     for (std::size_t i = 0; i < 3; ++i) {
-        ab[i] = b[i] - a[i];
-        ac[i] = c[i] - a[i];
-        bc[i] = c[i] - b[i];
-        ab2 += ab[i] * ab[i];
+        const double foot_a = c[i] + along_a * t.replaced_before.rate[i];
+        const double foot_b = c[i] + along_b * t.replaced_after.rate[i];
+        off_a2 += (a[i] - foot_a) * (a[i] - foot_a);
+        off_b2 += (b[i] - foot_b) * (b[i] - foot_b);
+        ab[i] = foot_b - foot_a;
+        ac[i] = c[i] - foot_a;
+        bc[i] = c[i] - foot_b;
+        feet2 += ab[i] * ab[i];
     }
     double dot_a = 0;
     double dot_b = 0;
@@ -155,13 +178,20 @@ double hull_verdict(const PathSegment& curve, const Transition& t, const AxisVec
         dot_a += ac[i] * ab[i];
         dot_b -= bc[i] * ab[i];
     }
-    if (!(ab2 > 0 && dot_a > 0 && dot_b > 0)) return -1;
-    // Height of C over the line AB.
+    if (!(feet2 > 0 && dot_a > 0 && dot_b > 0)) return -1;
+    // Height of C over the line A'B'.
     double h2 = 0;
     for (std::size_t i = 0; i < 3; ++i) {
-        const double e = ac[i] - dot_a / ab2 * ab[i];
+        const double e = ac[i] - dot_a / feet2 * ab[i];
         h2 += e * e;
     }
+    const double off = std::sqrt(std::max(off_a2, off_b2));
+    double ab2 = 0;
+    for (std::size_t i = 0; i < 3; ++i) {
+        ab[i] = b[i] - a[i];
+        ab2 += ab[i] * ab[i];
+    }
+    if (!(ab2 > 0)) return -1;
     // Bernstein coefficients of the quintic in u = s/L: b_i = sum_k C(i,k)/C(5,k) a_k.
     const double l = curve.length;
     std::array<std::array<double, 3>, 6> ctrl{};
@@ -206,7 +236,7 @@ double hull_verdict(const PathSegment& curve, const Transition& t, const AxisVec
         for (std::size_t i = 0; i < 3; ++i) along += 5 * (ctrl[k + 1][i] - ctrl[k][i]) / l * mean[i] * inv;
         if (!(along >= min_parametric_speed)) return -1;
     }
-    return far + std::sqrt(h2);
+    return far + std::sqrt(h2) + off + slack_mm;
 }
 
 //! Builds the curve between the states and measures it against the replaced path; false when it
@@ -283,8 +313,13 @@ bool single_quintic(const PathSegment& before, double before_room, const PathSeg
             // the two transitions that meet on it (see ChainStart).
             const double length = 0.5 * (distance3(out.start.position, out.end.position) + trim_a + trim_b);
             PathPoint a = out.start;
+            const ChainMidState mid =
+                chain_mid_state(chain->entry_start_d1, chain->entry_length, {a.d1[0], a.d1[1], a.d1[2]}, 2 * trim_a,
+                                {out.end.d1[0], out.end.d1[1], out.end.d1[2]}, length);
             for (std::size_t i = 0; i < 3; ++i) {
-                a.d2[i] = (out.end.d1[i] - chain->entry_start_d1[i]) / (chain->entry_length + length);
+                a.position[i] += mid.offset[i];
+                a.d1[i] = mid.d1[i];
+                a.d2[i] = mid.d2[i];
             }
             if (build(out, a, out.end, tolerance_mm, out.curve, out.deviation_mm, true)) {
                 out.start = a;

@@ -38,7 +38,7 @@ bool WindowFeed::add_curve_pieces(PathSegment& curve, int pieces, double feed_mm
     return true;
 }
 
-void WindowFeed::add_transition(Transition& transition, double feed_mm_s, const SegmentOrigin& origin) {
+void WindowFeed::add_transition(Transition& transition, double feed_mm_s, const SegmentOrigin& origin, bool stop) {
     // Under a jerk limit a transition that joins an arc is cut into pieces whose speed follows
     // its curvature; transitions between lines stay whole (a CAM chain would pay the pieces at
     // every vertex). A ramp transition's quintics share the pieces by their lengths.
@@ -56,7 +56,9 @@ void WindowFeed::add_transition(Transition& transition, double feed_mm_s, const 
         if (in_pieces && add_curve_pieces(curve, pieces, feed_mm_s, origin, continues_move)) return;
         const ProfileLimits limits = segment_limits(
             curve, machine_, feed_mm_s, kind_, kind_ == ProfileKind::trapezoid ? trapezoid_blend_normal_share : 0.5);
-        add_segment(std::move(curve), limits, limits.max_velocity, origin, true, {}, continues_move);
+        const bool last = &curve == (transition.more.empty() ? &transition.curve : &transition.more.back());
+        add_segment(std::move(curve), limits, stop && last ? 0.0 : limits.max_velocity, origin, true, {},
+                    continues_move);
     };
     add_one(transition.curve, false);
     for (PathSegment& g : transition.more) add_one(g, true);

@@ -35,7 +35,8 @@ public:
 
     //! A transition between two motions (a blend, fed at feed_mm_s): under a jerk limit one that
     //! joins an arc goes in pieces whose speed follows its curvature; others whole.
-    void add_transition(Transition& transition, double feed_mm_s, const SegmentOrigin& origin);
+    //! With `stop` it ends at rest (it took the rest of the motion before a stop: end_at_rest).
+    void add_transition(Transition& transition, double feed_mm_s, const SegmentOrigin& origin, bool stop = false);
 
     //! A programmed motion, ending at rest when `stop`, else at most at its own speed limit (the
     //! next segment lowers it further); `after` follows its end. An arc whose curvature sets its
