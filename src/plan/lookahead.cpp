@@ -244,7 +244,9 @@ Profile Lookahead::run_profile(const WindowRun& r, std::size_t first, double v_s
 bool Lookahead::append_merge_spans(std::size_t first, std::size_t count) {
     for (std::size_t i = first; i < first + count; ++i) {
         const WindowSegment& s = segments_[i];
-        if (!mergeable(s.check)) return false;
+        // A thread runs at the spindle's speed: a speed change spread over it would cut the
+        // pitch wrong, so thread runs keep their own profiles.
+        if (!mergeable(s.check) || s.spindle_locked) return false;
         merge_spans_.push_back({s.path.length, &s.check, &s.limits});
     }
     return true;

@@ -78,6 +78,7 @@ struct WindowSegment {
     std::int64_t sequence_number = -1;
     bool blend = false;
     bool continues_move = false;     //!< TrajectoryPiece::continues_move
+    bool spindle_locked = false;     //!< G32/G33 (SegmentOrigin::spindle_locked)
     std::vector<WindowEvent> after;  //!< events between its end and the next segment
     //! A curved piece's axes, so a run of such pieces may go faster where its profile holds the
     //! speed (cruise_raise.hpp); cruise_velocity 0 when unknown.

@@ -19,9 +19,10 @@ struct PendingMotion {
     //! Computed when first needed: a short line of a CAM chain is usually eaten whole by the
     //! transitions at its ends, and then its own limits never matter.
     std::optional<ProfileLimits> limits;
-    double normal_share = 0.5;  //!< of the acceleration, for the curvature term
-    double feed_mm_s = 0;       //!< +inf for rapids
-    bool blendable = false;     //!< a G1 line or a G2/G3 arc: its ends may be rounded
+    double normal_share = 0.5;    //!< of the acceleration, for the curvature term
+    double feed_mm_s = 0;         //!< +inf for rapids
+    bool blendable = false;       //!< a G1 line or a G2/G3 arc: its ends may be rounded
+    bool spindle_locked = false;  //!< G32/G33: moves at the spindle's speed
     PathControl control;
     SourceLocation where;
     std::int64_t sequence_number = -1;

@@ -69,7 +69,7 @@ struct Planner::Impl {
         if (!(p.path.length > min_trimmed_length)) {
             for (WindowEvent& e : pending_events) lookahead.add_event(std::move(e), window_feed.position);
         } else {
-            window_feed.add_motion(std::move(p.path), p.feed_mm_s, stop, {p.where, p.sequence_number},
+            window_feed.add_motion(std::move(p.path), p.feed_mm_s, stop, {p.where, p.sequence_number, p.spindle_locked},
                                    std::move(pending_events), p.limits, p.normal_share);
         }
         pending_events.clear();
@@ -85,6 +85,7 @@ struct Planner::Impl {
         s.normal_share = 0.5;
         s.feed_mm_s = 0;
         s.blendable = false;
+        s.spindle_locked = false;
         s.control = PathControl{};
         s.where = SourceLocation{};
         s.sequence_number = -1;
@@ -275,6 +276,7 @@ struct Planner::Impl {
         next.path = std::move(path);
         next.feed_mm_s = speed_mm_s;
         next.blendable = false;
+        next.spindle_locked = true;
         next.where = move.where;
         next.sequence_number = move.sequence_number;
         connect(next);

@@ -19,6 +19,7 @@ void WindowFeed::add_segment(PathSegment path, const ProfileLimits& limits, doub
     s.junction_max = junction_max;
     s.where = origin.where;
     s.sequence_number = origin.sequence_number;
+    s.spindle_locked = origin.spindle_locked;
     s.blend = blend;
     s.continues_move = continues_move;
     s.check = check;

@@ -17,6 +17,8 @@ namespace nckit::plan_detail {
 struct SegmentOrigin {
     SourceLocation where;
     std::int64_t sequence_number = -1;
+    //! G32/G33: the speed is the spindle's, never part of a speed change planned across runs.
+    bool spindle_locked = false;
 };
 
 //! Pieces of a whole ramp transition (shared among its quintics by length).

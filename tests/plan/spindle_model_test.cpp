@@ -1,8 +1,11 @@
 // The spindle model against direct integration, and G32/G33 index waits in the planner.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <random>
+#include <vector>
 
 #include "move_builder.hpp"
 #include "nckit/plan/planner.hpp"
@@ -168,6 +171,49 @@ TEST(SpindleSync, EveryThreadPassStartsOnTheIndex) {
             const double mid_s = p.start_time_s + p.duration_s / 2;
             EXPECT_NEAR(sample(p, mid_s).path_velocity, 15.0 * std::sqrt(1 - ripple * ripple), 1e-7);
         }
+    }
+}
+
+// Chained threads of different leads, short and long, and the rapid out: a thread moves at the
+// spindle's speed, so no speed change is planned across its ends together with another move
+// (the look-ahead plans runs of several moves as one profile elsewhere). Each thread move's
+// last piece ends its profile.
+TEST(SpindleSync, ChainedThreadsKeepProfilesOfTheirOwn) {
+    const MachineConfig m = lathe_with(rippled(0));
+    const std::vector<std::vector<double>> chains = {{5.0, 3.68, 0.2, 2.01, 0.2, 2.81},
+                                                     {0.5, 1.55, 0.2, 3.0, 1.0, 3.22},
+                                                     {10.0, 2.74, 10.0, 2.18, 5.0, 2.64, 10.0, 1.46, 0.2, 3.73}};
+    for (const std::vector<double>& chain : chains) {
+        plan_test::MoveBuilder b;
+        b.spindle(3, 1000);
+        b.rapid(plan_test::xyz(10, 0, 5));
+        double z = 5;
+        std::vector<std::int64_t> threads;
+        for (std::size_t k = 0; k + 1 < chain.size(); k += 2) {
+            z -= chain[k];
+            threads.push_back(static_cast<std::int64_t>(b.moves.size()));
+            b.thread(plan_test::xyz(10, 0, z), chain[k + 1]);
+        }
+        b.rapid(plan_test::xyz(15, 0, z));
+        PlanResult r = plan_moves(b.moves, m);
+        ASSERT_TRUE(r.diagnostics.empty());
+        const TrajectoryPiece* before = nullptr;
+        int thread_ends = 0;
+        for (const TrajectoryPiece& p : r.trajectory.pieces) {
+            if (p.kind != PieceKind::motion) continue;
+            const bool thread_now = std::find(threads.begin(), threads.end(), p.sequence_number) != threads.end();
+            if (before != nullptr && before->sequence_number != p.sequence_number) {
+                const bool thread_before =
+                    std::find(threads.begin(), threads.end(), before->sequence_number) != threads.end();
+                if (thread_before || thread_now) {
+                    EXPECT_TRUE(before->ends_profile)
+                        << "moves " << before->sequence_number << " and " << p.sequence_number << " share a profile";
+                    ++thread_ends;
+                }
+            }
+            before = &p;
+        }
+        EXPECT_GE(thread_ends, static_cast<int>(threads.size()));
     }
 }
 
