@@ -17,6 +17,9 @@ struct PlannerOptions {
     double feed_override = 1.0;                //!< factor on programmed feeds, (0, 2]; not on rapids
     std::size_t window_moves = 10000;          //!< most segments held for look-ahead (>= 2)
     double default_blend_tolerance_mm = 0.05;  //!< mm, G64 without P
+    //! Jerk-limited plans stop exactly at a sharp corner between lines whose transition would be
+    //! slower to cross than a stop (src/plan/corner_stop.hpp); false always passes through it.
+    bool stop_sharp_corners = true;
 };
 
 //! Streaming planner. push() the interpreter's moves in order, then finish(); pop() hands out
