@@ -6,8 +6,8 @@
 // by R after each peck, feeds to the bottom, returns to A's level at rapid and steps across
 // (never past the end point) for the next column. R in the second block (the 0i's Δd, the travel
 // of the tool at the bottom of the cut) moves the tool back along the step axis, against the step
-// direction, at the bottom of every column before it returns: towards the column cut before, where
-// the material is gone, so the tool's side leaves the groove wall it was cutting. P and Q without
+// direction, at the bottom of every column but the first before it returns: into the column cut
+// before, where the material is gone, so the tool's side leaves the groove wall it was cutting. P and Q without
 // a decimal point count least increments (P2000 = 2 mm); X is a diameter on a diameter lathe, P
 // and R radii. The one-block form
 // of older controls (`G75 X Z I(peck in X) K(step in Z) F`, G74 with K the peck in Z and I the
@@ -86,14 +86,16 @@ std::optional<Diagnostic> Executor::groove_cycle(std::vector<Move>& out) {
         if (r->value < 0) {
             return error(r->column, "bad-value", fmt::format("{} R (relief at the bottom) must not be negative", name));
         }
-        // The relief goes against the step direction; with no step across there is none.
+        // The relief goes against the step direction; with no step across there is none, and
+        // the control makes none (it runs the cycle without it).
         if (across <= 1e-9) {
-            return error(r->column, "bad-value",
-                         fmt::format("{} R (relief at the bottom) needs an end point across the start ({}), which "
-                                     "gives its direction",
-                                     name, face ? "X (U)" : "Z (W)"));
+            warn(r->column, "ignored-word",
+                 fmt::format("{} R (relief at the bottom) has no effect: the end point is not across the start "
+                             "({}), so there is no step to relieve against",
+                             name, face ? "X (U)" : "Z (W)"));
+        } else {
+            relief = offset_value(*r);
         }
-        relief = offset_value(*r);
     }
     const double pecks = peck > 0 ? depth / peck : 1.0;
     const double columns = across > 1e-9 ? across / step + 1.0 : 1.0;
@@ -120,10 +122,12 @@ std::optional<Diagnostic> Executor::groove_cycle(std::vector<Move>& out) {
                     return e;
             }
         }
-        if (relief > 0) {
-            if (auto e = straight(g(0), at(depth, shift - relief), out)) return e;
+        // No relief in the first column: behind it is the groove's wall, not a column cut before.
+        const double back = shift > 0 ? relief : 0.0;
+        if (back > 0) {
+            if (auto e = straight(g(0), at(depth, shift - back), out)) return e;
         }
-        if (auto e = straight(g(0), at(0, shift - relief), out)) return e;
+        if (auto e = straight(g(0), at(0, shift - back), out)) return e;
         if (shift >= across - 1e-9) break;
     }
     if (position_ != start) return straight(g(0), start, out);
