@@ -4,8 +4,12 @@
 //   G74 X(U) Z(W) P(step across, X) Q(peck, Z) F       (G75: P the peck in X, Q the step in Z)
 // From the start point A each column pecks towards the end point by the peck depth, backing off
 // by R after each peck, feeds to the bottom, returns to A's level at rapid and steps across
-// (never past the end point) for the next column. P and Q without a decimal point count least
-// increments (P2000 = 2 mm); X is a diameter on a diameter lathe, P a radius. The one-block form
+// (never past the end point) for the next column. R in the second block (the 0i's Δd, the travel
+// of the tool at the bottom of the cut) moves the tool back along the step axis, against the step
+// direction, at the bottom of every column but the first before it returns: into the column cut
+// before, where the material is gone, so the tool's side leaves the groove wall it was cutting. P and Q without
+// a decimal point count least increments (P2000 = 2 mm); X is a diameter on a diameter lathe, P
+// and R radii. The one-block form
 // of older controls (`G75 X Z I(peck in X) K(step in Z) F`, G74 with K the peck in Z and I the
 // step in X) takes the back-off from the last `G74/G75 R` block, none if there was none.
 #include <cmath>
@@ -44,9 +48,6 @@ std::optional<Diagnostic> Executor::groove_cycle(std::vector<Move>& out) {
         if (w == nullptr) return 0.0;
         return w->has_decimal_point ? offset_value(*w) : w->value * (inch ? 0.0001 * 25.4 : 0.001);
     };
-    if (const Word* r = words_.word('R'); r != nullptr && r->value != 0) {
-        return error(r->column, "unsupported-word", fmt::format("{} R (relief at the bottom) is not supported", name));
-    }
     for (char letter : {'P', 'Q', 'I', 'K'}) {
         if (const Word* w = words_.word(letter); w != nullptr && w->value < 0) {
             return error(w->column, "bad-value", fmt::format("{} {} must not be negative", name, letter));
@@ -76,6 +77,26 @@ std::optional<Diagnostic> Executor::groove_cycle(std::vector<Move>& out) {
         return error(column, "missing-word",
                      fmt::format("{} needs the step across ({}) to reach the end point", name, step_letter));
     }
+    double relief = 0;
+    if (const Word* r = words_.word('R'); r != nullptr && r->value != 0) {
+        if (one_block) {
+            return error(r->column, "bad-combination",
+                         fmt::format("{}: R (relief at the bottom) belongs to the P Q form, not to I K", name));
+        }
+        if (r->value < 0) {
+            return error(r->column, "bad-value", fmt::format("{} R (relief at the bottom) must not be negative", name));
+        }
+        // The relief goes against the step direction; with no step across there is none, and
+        // the control makes none (it runs the cycle without it).
+        if (across <= 1e-9) {
+            warn(r->column, "ignored-word",
+                 fmt::format("{} R (relief at the bottom) has no effect: the end point is not across the start "
+                             "({}), so there is no step to relieve against",
+                             name, face ? "X (U)" : "Z (W)"));
+        } else {
+            relief = offset_value(*r);
+        }
+    }
     const double pecks = peck > 0 ? depth / peck : 1.0;
     const double columns = across > 1e-9 ? across / step + 1.0 : 1.0;
     if (pecks * columns * 2.0 > max_groove_moves) {
@@ -101,7 +122,12 @@ std::optional<Diagnostic> Executor::groove_cycle(std::vector<Move>& out) {
                     return e;
             }
         }
-        if (auto e = straight(g(0), at(0, shift), out)) return e;
+        // No relief in the first column: behind it is the groove's wall, not a column cut before.
+        const double back = shift > 0 ? relief : 0.0;
+        if (back > 0) {
+            if (auto e = straight(g(0), at(depth, shift - back), out)) return e;
+        }
+        if (auto e = straight(g(0), at(0, shift - back), out)) return e;
         if (shift >= across - 1e-9) break;
     }
     if (position_ != start) return straight(g(0), start, out);

@@ -128,6 +128,8 @@ MALFORMED = {
     "g73.nc": ("G73 U1. W1. R0\nM30\n", "g73.nc:1:13: error: G73 R (passes)"),
     "g74.nc": ("G74 R-1.\nM30\n", "g74.nc:1:5: error: G74 R (retract)"),
     "g75.nc": ("G0 X42. Z-10.\nG75 X30. Z-14. P2000 F0.05\nM30\n", "g75.nc:2:1: error: G75 needs the step across"),
+    "g75_relief.nc": ("G0 X42. Z-10.\nG75 X30. Z-14. P2000 Q3000 R-1. F0.05\nM30\n",
+                      "g75_relief.nc:2:28: error: G75 R (relief at the bottom) must not be negative"),
     "g76.nc": ("G76 P1234567\nM30\n", "g76.nc:1:5: error: G76 P is six digits"),
     "g76_one_block.nc": ("G0 X24. Z5.\nG76 X18. Z-20. K0 D0.4 F1.5\nM30\n", "g76_one_block.nc:2:16: error: G76:"),
     "g50.nc": ("G50 S-100\nM30\n", "g50.nc:1:5: error:"),

@@ -2,6 +2,8 @@
 // by hand.
 #include <cmath>
 #include <numbers>
+#include <string>
+#include <tuple>
 
 #include <gtest/gtest.h>
 
@@ -82,6 +84,58 @@ TEST(LatheGrooving, G75PecksAlongXAndStepsInZ) {
     EXPECT_DOUBLE_EQ(std::get<Line>(moves.back().what).to[Axis::Z], -10.0);
 }
 
+TEST(LatheGrooving, G75ReliefAtTheBottom) {
+    // The numbers of G75PecksAlongXAndStepsInZ with R1. (the 0i's relief at the bottom) in the
+    // second block: the steps go to -Z, so at the bottom of each column but the first (radius 15)
+    // the tool moves 1 mm back to +Z, into the column cut before, at rapid, then returns to
+    // radius 21 there. The first column has the groove's wall behind it: no relief.
+    auto moves = moves_of("G0 X42. Z-10.\nG75 R0.5\nG75 X30. Z-14. P2000 Q3000 R1. F0.05\n", system_a_lathe());
+    std::vector<std::tuple<double, double, bool>> ends;
+    for (const Move& m : moves) {
+        if (const auto* l = std::get_if<Line>(&m.what); l != nullptr && m.where.line == 3) {
+            ends.emplace_back(l->to[Axis::X], l->to[Axis::Z], l->rapid);
+        }
+    }
+    const std::vector<std::tuple<double, double, bool>> want{
+        {19, -10, false},  {19.5, -10, true}, {17, -10, false},  {17.5, -10, true}, {15, -10, false},  {21, -10, true},
+        {21, -13, true},   {19, -13, false},  {19.5, -13, true}, {17, -13, false},  {17.5, -13, true}, {15, -13, false},
+        {15, -12, true},   {21, -12, true},   {21, -14, true},   {19, -14, false},  {19.5, -14, true}, {17, -14, false},
+        {17.5, -14, true}, {15, -14, false},  {15, -13, true},   {21, -13, true},   {21, -10, true}};
+    EXPECT_EQ(ends, want);
+}
+
+TEST(LatheGrooving, G74ReliefGoesAgainstTheXSteps) {
+    // G74 steps across in X: from X20 (radius 10) to X10 (radius 5) in 3 mm steps the columns are
+    // at radius 10, 7, 5, stepping to -X, so the relief of 0.5 at the bottoms (Z-4) of the second
+    // and third columns goes to +X; the first has none.
+    auto moves = moves_of("G0 X20. Z1.\nG74 X10. Z-4. P3000 Q5000 R0.5 F0.1\nM30\n", system_a_lathe());
+    std::vector<std::pair<double, double>> reliefs;  // rapids along X at the bottom
+    const Line* previous = nullptr;
+    for (const Move& m : moves) {
+        const auto* l = std::get_if<Line>(&m.what);
+        if (l == nullptr || m.where.line != 2) continue;
+        if (previous != nullptr && !previous->rapid && l->rapid && l->to[Axis::Z] == previous->to[Axis::Z]) {
+            reliefs.emplace_back(l->to[Axis::X], l->to[Axis::Z]);
+        }
+        previous = l;
+    }
+    const std::vector<std::pair<double, double>> want{{7.5, -4}, {5.5, -4}};
+    EXPECT_EQ(reliefs, want);
+}
+
+TEST(LatheGrooving, ReliefWithoutAStepIsIgnoredWithAWarning) {
+    // `G75 X30. P2000 R1.`: one column, no step across, so nothing to relieve against; the
+    // cycle runs as without R and says so.
+    const MachineConfig lathe = system_a_lathe();
+    std::vector<std::string> warnings;
+    InterpreterOptions options;
+    options.on_warning = [&](const Diagnostic& d) { warnings.push_back(where(d)); };
+    const auto with_r = moves_of("G0 X42. Z-10.\nG75 X30. P2000 R1. F0.05\nM30\n", lathe, options);
+    const auto without = moves_of("G0 X42. Z-10.\nG75 X30. P2000 F0.05\nM30\n", lathe);
+    EXPECT_EQ(with_r.size(), without.size());
+    EXPECT_EQ(warnings, (std::vector<std::string>{"ignored-word 2:16"}));
+}
+
 TEST(LatheGrooving, OneBlockG75PecksByI) {
     // `G75 X0 I0.5` from X4 (radius 2): pecks of 0.5 on the radius to the centre, no back-off.
     auto moves = moves_of("G0 X4. Z-3.\nG1 F0.1\nG75 X0 I0.5\nM30\n", system_a_lathe());
@@ -101,6 +155,9 @@ TEST(LatheThreadGrooveErrors, MalformedCycles) {
     EXPECT_EQ(error_where("G0 X42. Z-10.\nG75 X0 I0.005 J1. F0.1\n", lathe), "unused-word 2:15");
     EXPECT_EQ(error_where("G0 X42. Z-10.\nG75 X0 I0.005 P2000 F0.1\n", lathe), "bad-combination 2:15");
     EXPECT_EQ(error_where("G0 X42. Z-10.\nG75 X30. Z-14. P2000 F0.05\n", lathe), "missing-word 2:1");
+    // R (the relief at the bottom): negative (it is unsigned), in the one-block I K form.
+    EXPECT_EQ(error_where("G0 X42. Z-10.\nG75 X30. Z-14. P2000 Q3000 R-1. F0.05\n", lathe), "bad-value 2:28");
+    EXPECT_EQ(error_where("G0 X4. Z-3.\nG1 F0.1\nG75 X0 I0.5 R1.\n", lathe), "bad-combination 3:13");
 }
 
 }  // namespace
