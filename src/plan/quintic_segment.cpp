@@ -118,8 +118,9 @@ DerivativeBounds quintic_bounds(const PathSegment& g) {
     const double l = g.length;
     for (std::size_t i = 3; i < axis_count; ++i) b.d1[i] = std::abs(g.rate[i]);
     double d2_norm2 = 0;
-    const double h = l / bound_samples;
     std::array<std::array<double, 5>, 3> control{};
+    std::array<double, 3> hull{};
+    std::array<bool, 3> sample_axis{};
     for (std::size_t i = 0; i < 3; ++i) {
         const double c1 = g.rate[i];
         const double c2 = g.poly[0][i];
@@ -130,46 +131,44 @@ DerivativeBounds quintic_bounds(const PathSegment& g) {
         b.d2[i] = max_abs_cubic(2 * c2, 6 * c3, 12 * c4, 20 * c5, l) * (1 + bound_pad);
         d2_norm2 += b.d2[i] * b.d2[i];
         control[i] = slope_control_points(c1, c2, c3, c4, c5, l);
-        double hull = 0;
-        for (double c : control[i]) hull = std::max(hull, std::abs(c));
+        for (double c : control[i]) hull[i] = std::max(hull[i], std::abs(c));
         const double ends = std::max(std::abs(control[i][0]), std::abs(control[i][4]));
-        if (tight(hull, ends)) {
-            b.d1[i] = hull * (1 + bound_pad);
-            continue;
-        }
-        // q' sampled; between samples it moves by at most d2 · h/2 from the nearer one.
-        double m = 0;
-        for (int k = 0; k <= bound_samples; ++k) {
-            const double s = h * k;
-            m = std::max(m, std::abs(c1 + s * (2 * c2 + s * (3 * c3 + s * (4 * c4 + s * 5 * c5)))));
-        }
-        b.d1[i] = std::min(hull, m + b.d2[i] * h / 2) * (1 + bound_pad);
+        sample_axis[i] = !tight(hull[i], ends);
+        if (!sample_axis[i]) b.d1[i] = hull[i] * (1 + bound_pad);
     }
-    // |p'| is convex in p', so it is at most the largest norm of the control points.
-    double hull = 0;
-    for (std::size_t k = 0; k < 5; ++k) {
-        hull = std::max(hull, std::sqrt(control[0][k] * control[0][k] + control[1][k] * control[1][k] +
-                                        control[2][k] * control[2][k]));
-    }
-    auto norm_at = [&](std::size_t k) {
-        return std::sqrt(control[0][k] * control[0][k] + control[1][k] * control[1][k] + control[2][k] * control[2][k]);
+    // |p'| is convex in p', so it is at most the largest norm of the control points. Squares are
+    // compared and one root taken: the root is monotonic, so the maximum is the same number.
+    auto norm2_at = [&](std::size_t k) {
+        return control[0][k] * control[0][k] + control[1][k] * control[1][k] + control[2][k] * control[2][k];
     };
-    if (tight(hull, std::max(norm_at(0), norm_at(4)))) {
-        b.speed_factor = hull * (1 + bound_pad);
-        return b;
-    }
-    double speed = 0;
+    double speed_hull2 = 0;
+    for (std::size_t k = 0; k < 5; ++k) speed_hull2 = std::max(speed_hull2, norm2_at(k));
+    const double speed_hull = std::sqrt(speed_hull2);
+    const bool sample_speed = !tight(speed_hull, std::sqrt(std::max(norm2_at(0), norm2_at(4))));
+    if (!sample_speed) b.speed_factor = speed_hull * (1 + bound_pad);
+    if (!(sample_speed || sample_axis[0] || sample_axis[1] || sample_axis[2])) return b;
+    // q' sampled on all three axes at once (independent sums, one root at the end); between
+    // samples q' moves by at most d2 · h/2 from the nearer one, |p'| by at most |d2| · h/2.
+    const double h = l / bound_samples;
+    std::array<double, 3> most{};
+    double speed2_most = 0;
     for (int k = 0; k <= bound_samples; ++k) {
         const double s = h * k;
         double speed2 = 0;
         for (std::size_t i = 0; i < 3; ++i) {
             const double d1 = g.rate[i] + s * (2 * g.poly[0][i] +
                                                s * (3 * g.poly[1][i] + s * (4 * g.poly[2][i] + s * 5 * g.poly[3][i])));
+            most[i] = std::max(most[i], std::abs(d1));
             speed2 += d1 * d1;
         }
-        speed = std::max(speed, std::sqrt(speed2));
+        speed2_most = std::max(speed2_most, speed2);
     }
-    b.speed_factor = std::min(hull, speed + std::sqrt(d2_norm2) * h / 2) * (1 + bound_pad);
+    for (std::size_t i = 0; i < 3; ++i) {
+        if (sample_axis[i]) b.d1[i] = std::min(hull[i], most[i] + b.d2[i] * h / 2) * (1 + bound_pad);
+    }
+    if (sample_speed) {
+        b.speed_factor = std::min(speed_hull, std::sqrt(speed2_most) + std::sqrt(d2_norm2) * h / 2) * (1 + bound_pad);
+    }
     return b;
 }
 
