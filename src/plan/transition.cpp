@@ -209,11 +209,9 @@ double hull_verdict(const PathSegment& curve, const Transition& t, const AxisVec
     return far + std::sqrt(h2);
 }
 
-//! Builds the curve between the states and measures it against the replaced path; false when it
-//! leaves the tolerance (target fraction) or nearly stops moving along its parameter.
-//! The curve goes to `curve` and its measured deviation to `deviation_mm` (also on failure).
-bool build(const Transition& t, const PathPoint& a, const PathPoint& b, double tolerance_mm, PathSegment& curve,
-           double& deviation_mm, bool chained = false) {
+//! The parameter length of the curve between the states: the mean of its chord and the trims,
+//! or, `chained` between two lines, the arc length of the circle with the end directions.
+double curve_length(const Transition& t, const PathPoint& a, const PathPoint& b, bool chained) {
     const double chord = distance3(a.position, b.position);
     double length = 0.5 * (chord + t.trim_before + t.trim_after);
     if (chained && t.replaced_before.shape == SegmentShape::line && t.replaced_after.shape == SegmentShape::line) {
@@ -230,6 +228,15 @@ bool build(const Transition& t, const PathPoint& a, const PathPoint& b, double t
             length = half_turn > 1e-12 ? chord * half_turn / std::sin(half_turn) : chord;
         }
     }
+    return length;
+}
+
+//! Builds the curve of parameter length `length` between the states and measures it against the
+//! replaced path; false when it leaves the tolerance (target fraction) or nearly stops moving
+//! along its parameter. The curve goes to `curve` and its measured deviation to `deviation_mm`
+//! (also on failure).
+bool build_of_length(const Transition& t, const PathPoint& a, const PathPoint& b, double length, double tolerance_mm,
+                     PathSegment& curve, double& deviation_mm) {
     curve = make_quintic(a, b, length, AxisVector{});
     const double bound = hull_verdict(curve, t, a.position, b.position);
     if (bound >= 0 && bound <= deviation_target * tolerance_mm) {
@@ -239,6 +246,12 @@ bool build(const Transition& t, const PathPoint& a, const PathPoint& b, double t
     const CurveDeviation measured = measure_deviation(curve, t, tolerance_mm);
     deviation_mm = measured.deviation_mm;
     return measured.deviation_mm <= deviation_target * tolerance_mm && measured.slowest >= min_parametric_speed;
+}
+
+//! build_of_length with the curve_length.
+bool build(const Transition& t, const PathPoint& a, const PathPoint& b, double tolerance_mm, PathSegment& curve,
+           double& deviation_mm, bool chained = false) {
+    return build_of_length(t, a, b, curve_length(t, a, b, chained), tolerance_mm, curve, deviation_mm);
 }
 
 }  // namespace
@@ -319,27 +332,26 @@ bool make_transition(const PathSegment& before, double before_room, const PathSe
     return true;
 }
 
-std::optional<Rebuilt> with_end_states(const Transition& transition, const std::array<double, 3>& start_d1,
-                                       const std::array<double, 3>& start_d2, const std::array<double, 3>& end_d1,
-                                       const std::array<double, 3>& end_d2, double tolerance_mm) {
-    Rebuilt out;
-    out.start = transition.start;
-    out.end = transition.end;
+bool rebuild_with_end_state(Transition& transition, const std::array<double, 3>& end_d1,
+                            const std::array<double, 3>& end_d2, double tolerance_mm) {
+    PathPoint end = transition.end;
     for (std::size_t i = 0; i < 3; ++i) {
-        out.start.d1[i] = start_d1[i];
-        out.start.d2[i] = start_d2[i];
-        out.end.d1[i] = end_d1[i];
-        out.end.d2[i] = end_d2[i];
+        end.d1[i] = end_d1[i];
+        end.d2[i] = end_d2[i];
     }
-    if (!build(transition, out.start, out.end, tolerance_mm, out.curve, out.deviation_mm, true)) return std::nullopt;
-    return out;
-}
-
-void apply(Transition& transition, const Rebuilt& rebuilt) {
-    transition.curve = rebuilt.curve;
-    transition.start = rebuilt.start;
-    transition.end = rebuilt.end;
-    transition.deviation_mm = rebuilt.deviation_mm;
+    // A chained transition keeps its end points and, on a chain of lines, its end directions:
+    // then its length is the one curve_length gave it, which needs no trigonometry again.
+    const bool same_directions =
+        end.d1[0] == transition.end.d1[0] && end.d1[1] == transition.end.d1[1] && end.d1[2] == transition.end.d1[2];
+    const double length = transition.chained && same_directions ? transition.curve.length
+                                                                : curve_length(transition, transition.start, end, true);
+    PathSegment curve;
+    double deviation_mm = 0;
+    if (!build_of_length(transition, transition.start, end, length, tolerance_mm, curve, deviation_mm)) return false;
+    transition.curve = curve;
+    transition.end = end;
+    transition.deviation_mm = deviation_mm;
+    return true;
 }
 
 }  // namespace nckit::plan_detail
