@@ -30,6 +30,11 @@ constexpr double ramp_speed_margin = 1.005;
 // Chained transitions take an arc-length parameter up to this half turn between their ends.
 constexpr double chained_max_half_turn_rad = 0.5;
 
+//! What point_at takes for a line: no circular and no polynomial part.
+bool is_line(const PathSegment& g) {
+    return g.shape != SegmentShape::quintic && !(g.radius_mm > 0);
+}
+
 double distance3(const AxisVector& a, const AxisVector& b) {
     return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
 }
@@ -71,6 +76,13 @@ void measure_into(const PathSegment& curve, const Piece& tail, const Piece& head
 }  // namespace
 
 bool smooth_join(const PathSegment& before, const PathSegment& after, double direction_tolerance, bool curvature_too) {
+    if (is_line(before) && is_line(after)) {
+        // A line's direction is its rate everywhere and its curvature 0 (point_at).
+        for (std::size_t i = 0; i < axis_count; ++i) {
+            if (std::abs(before.rate[i] - after.rate[i]) > direction_tolerance) return false;
+        }
+        return true;
+    }
     const PathPoint e = point_at(before, before.length);
     const PathPoint s = point_at(after, 0.0);
     for (std::size_t i = 0; i < axis_count; ++i) {
