@@ -8,12 +8,16 @@
 
 namespace nckit {
 
-PathSegment make_quintic(const PathPoint& start, const PathPoint& end, double length, const AxisVector& other_rate) {
-    PathSegment g;
+void write_quintic(PathSegment& g, const PathPoint& start, const PathPoint& end, double length,
+                   const AxisVector& other_rate) {
     g.shape = SegmentShape::quintic;
     g.length = length;
     g.origin = start.position;
     for (std::size_t i = 3; i < axis_count; ++i) g.rate[i] = other_rate[i];
+    g.u = {};
+    g.v = {};
+    g.radius_mm = 0;
+    g.angle_rate = 0;
     // In u = s / L: p(u) = Σ a_k u^k with p, p', p'' given at u = 0 and 1 (derivatives in u are
     // L and L² times those in s). The coefficients in s are a_k / L^k.
     const double l = length;
@@ -32,6 +36,11 @@ PathSegment make_quintic(const PathPoint& start, const PathPoint& end, double le
         g.poly[2][i] = a4 / (l * l * l * l);
         g.poly[3][i] = a5 / (l * l * l * l * l);
     }
+}
+
+PathSegment make_quintic(const PathPoint& start, const PathPoint& end, double length, const AxisVector& other_rate) {
+    PathSegment g;
+    write_quintic(g, start, end, length, other_rate);
     return g;
 }
 

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "chord_distance.hpp"
+#include "quintic_bounds.hpp"
 #include "ramp_transition.hpp"
 
 namespace nckit::plan_detail {
@@ -33,6 +34,18 @@ constexpr double chained_max_half_turn_rad = 0.5;
 //! What point_at takes for a line: no circular and no polynomial part.
 bool is_line(const PathSegment& g) {
     return g.shape != SegmentShape::quintic && !(g.radius_mm > 0);
+}
+
+//! trim_start(g, trim) written to `out`: a line is copied once (the value trim_start returns
+//! would be copied again).
+void trim_start_into(PathSegment& out, const PathSegment& g, double trim) {
+    if (!is_line(g)) {
+        out = trim_start(g, trim);
+        return;
+    }
+    out = g;
+    out.length = g.length - trim;
+    out.origin = position_at(g, trim);
 }
 
 double distance3(const AxisVector& a, const AxisVector& b) {
@@ -249,7 +262,7 @@ double curve_length(const Transition& t, const PathPoint& a, const PathPoint& b,
 //! (also on failure).
 bool build_of_length(const Transition& t, const PathPoint& a, const PathPoint& b, double length, double tolerance_mm,
                      PathSegment& curve, double& deviation_mm) {
-    curve = make_quintic(a, b, length, AxisVector{});
+    write_quintic(curve, a, b, length, AxisVector{});
     const double bound = hull_verdict(curve, t, a.position, b.position);
     if (bound >= 0 && bound <= deviation_target * tolerance_mm) {
         deviation_mm = bound;
@@ -297,7 +310,7 @@ bool single_quintic(const PathSegment& before, double before_room, const PathSeg
         if (!(trim_a > min_trim_mm && trim_b > min_trim_mm)) return false;
         out.trim_before = trim_a;
         out.trim_after = trim_b;
-        out.replaced_before = trim_start(before, before.length - trim_a);
+        trim_start_into(out.replaced_before, before, before.length - trim_a);
         out.replaced_after = after;
         out.replaced_after.length = trim_b;
         out.start = point_at(before, before.length - trim_a);
@@ -306,16 +319,17 @@ bool single_quintic(const PathSegment& before, double before_room, const PathSeg
         if (chain != nullptr && trim_a == before.length) {
             // `before` is eaten: start with the curvature of the turn between the outer ends of
             // the two transitions that meet on it (see ChainStart).
+            // (The start's curvature is set in place, and put back when the curve fails.)
             const double length = 0.5 * (distance3(out.start.position, out.end.position) + trim_a + trim_b);
-            PathPoint a = out.start;
+            const std::array<double, 3> own_d2{out.start.d2[0], out.start.d2[1], out.start.d2[2]};
             for (std::size_t i = 0; i < 3; ++i) {
-                a.d2[i] = (out.end.d1[i] - chain->entry_start_d1[i]) / (chain->entry_length + length);
+                out.start.d2[i] = (out.end.d1[i] - chain->entry_start_d1[i]) / (chain->entry_length + length);
             }
-            if (build(out, a, out.end, tolerance_mm, out.curve, out.deviation_mm, true)) {
-                out.start = a;
+            if (build(out, out.start, out.end, tolerance_mm, out.curve, out.deviation_mm, true)) {
                 out.chained = true;
                 return true;
             }
+            for (std::size_t i = 0; i < 3; ++i) out.start.d2[i] = own_d2[i];
         }
         if (build(out, out.start, out.end, tolerance_mm, out.curve, out.deviation_mm)) return true;
         const double target = deviation_target * tolerance_mm;
