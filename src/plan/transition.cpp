@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <utility>
 
 #include "chord_distance.hpp"
@@ -360,24 +361,39 @@ bool make_transition(const PathSegment& before, double before_room, const PathSe
 
 bool rebuild_with_end_state(Transition& transition, const std::array<double, 3>& end_d1,
                             const std::array<double, 3>& end_d2, double tolerance_mm) {
-    PathPoint end = transition.end;
+    // Built in place. Failing, the end state is put back and the curve with it: a chained curve
+    // is the quintic between its states with its own length (single_quintic), so building it
+    // again gives the same numbers; any other curve is kept as a copy.
+    PathPoint& end = transition.end;
+    const std::array<double, 3> old_d1{end.d1[0], end.d1[1], end.d1[2]};
+    const std::array<double, 3> old_d2{end.d2[0], end.d2[1], end.d2[2]};
+    const double old_length = transition.curve.length;
+    std::optional<PathSegment> kept;
+    if (!transition.chained) kept = transition.curve;
+    // A chained transition keeps its end points and, on a chain of lines, its end directions:
+    // then its length is the one curve_length gave it, which needs no trigonometry again.
+    const bool same_directions = end_d1[0] == old_d1[0] && end_d1[1] == old_d1[1] && end_d1[2] == old_d1[2];
     for (std::size_t i = 0; i < 3; ++i) {
         end.d1[i] = end_d1[i];
         end.d2[i] = end_d2[i];
     }
-    // A chained transition keeps its end points and, on a chain of lines, its end directions:
-    // then its length is the one curve_length gave it, which needs no trigonometry again.
-    const bool same_directions =
-        end.d1[0] == transition.end.d1[0] && end.d1[1] == transition.end.d1[1] && end.d1[2] == transition.end.d1[2];
-    const double length = transition.chained && same_directions ? transition.curve.length
-                                                                : curve_length(transition, transition.start, end, true);
-    PathSegment curve;
+    const double length =
+        transition.chained && same_directions ? old_length : curve_length(transition, transition.start, end, true);
     double deviation_mm = 0;
-    if (!build_of_length(transition, transition.start, end, length, tolerance_mm, curve, deviation_mm)) return false;
-    transition.curve = curve;
-    transition.end = end;
-    transition.deviation_mm = deviation_mm;
-    return true;
+    if (build_of_length(transition, transition.start, end, length, tolerance_mm, transition.curve, deviation_mm)) {
+        transition.deviation_mm = deviation_mm;
+        return true;
+    }
+    for (std::size_t i = 0; i < 3; ++i) {
+        end.d1[i] = old_d1[i];
+        end.d2[i] = old_d2[i];
+    }
+    if (kept) {
+        transition.curve = *kept;
+    } else {
+        write_quintic(transition.curve, transition.start, end, old_length, AxisVector{});
+    }
+    return false;
 }
 
 }  // namespace nckit::plan_detail
