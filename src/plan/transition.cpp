@@ -182,12 +182,16 @@ double hull_verdict(const PathSegment& curve, const Transition& t, const AxisVec
         dot_b -= bc[i] * ab[i];
     }
     if (!(ab2 > 0 && dot_a > 0 && dot_b > 0)) return -1;
+    // The roots are started early, so that their latency hides behind the control points.
+    const double inv = 1.0 / std::sqrt(ab2);
     // Height of C over the line AB.
     double h2 = 0;
+    const double along_c = dot_a / ab2;
     for (std::size_t i = 0; i < 3; ++i) {
-        const double e = ac[i] - dot_a / ab2 * ab[i];
+        const double e = ac[i] - along_c * ab[i];
         h2 += e * e;
     }
+    const double height = std::sqrt(h2);
     // Bernstein coefficients of the quintic in u = s/L: b_i = sum_k C(i,k)/C(5,k) a_k.
     const double l = curve.length;
     std::array<std::array<double, 3>, 6> ctrl{};
@@ -205,6 +209,12 @@ double hull_verdict(const PathSegment& curve, const Transition& t, const AxisVec
         ctrl[4][i] = a0 + 4 * a1 / 5 + 6 * a2 / 10 + 4 * a3 / 10 + a4 / 5;
         ctrl[5][i] = a0 + a1 + a2 + a3 + a4 + a5;
     }
+    // The velocity's control points 5 (b_{i+1} - b_i) / L along the chord's direction.
+    for (std::size_t k = 0; k < 5; ++k) {
+        double along = 0;
+        for (std::size_t i = 0; i < 3; ++i) along += 5 * (ctrl[k + 1][i] - ctrl[k][i]) / l * ab[i] * inv;
+        if (!(along >= min_parametric_speed)) return -1;
+    }
     // The first and the last control point are A and B themselves (on the chord).
     double far2 = 0;
     for (std::size_t k = 1; k < 5; ++k) {
@@ -218,21 +228,7 @@ double hull_verdict(const PathSegment& curve, const Transition& t, const AxisVec
         }
         far2 = std::max(far2, d2);
     }
-    const double far = std::sqrt(far2);
-    // The velocity's control points 5 (b_{i+1} - b_i) / L along the mean of the end directions.
-    std::array<double, 3> mean{};
-    double mean2 = 0;
-    for (std::size_t i = 0; i < 3; ++i) {
-        mean[i] = ab[i];
-        mean2 += mean[i] * mean[i];
-    }
-    const double inv = 1.0 / std::sqrt(mean2);
-    for (std::size_t k = 0; k < 5; ++k) {
-        double along = 0;
-        for (std::size_t i = 0; i < 3; ++i) along += 5 * (ctrl[k + 1][i] - ctrl[k][i]) / l * mean[i] * inv;
-        if (!(along >= min_parametric_speed)) return -1;
-    }
-    return far + std::sqrt(h2);
+    return std::sqrt(far2) + height;
 }
 
 //! The parameter length of the curve between the states: the mean of its chord and the trims,
