@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "chord_distance.hpp"
+#include "hull_verdict.hpp"
 #include "quintic_bounds.hpp"
 #include "ramp_transition.hpp"
 
@@ -47,6 +48,21 @@ void trim_start_into(PathSegment& out, const PathSegment& g, double trim) {
     out = g;
     out.length = g.length - trim;
     out.origin = position_at(g, trim);
+}
+
+//! point_at(g, s) written to `out`; a line's directly (the value point_at returns would be
+//! copied again).
+void point_into(PathPoint& out, const PathSegment& g, double s) {
+    if (!is_line(g)) {
+        out = point_at(g, s);
+        return;
+    }
+    for (std::size_t i = 0; i < axis_count; ++i) {
+        out.position[i] = g.origin[i] + g.rate[i] * s;
+        out.d1[i] = g.rate[i];
+        out.d2[i] = 0;
+        out.d3[i] = 0;
+    }
 }
 
 double distance3(const AxisVector& a, const AxisVector& b) {
@@ -153,84 +169,6 @@ void measure_into(const PathSegment& curve, const Piece& tail, const Piece& head
 
 namespace {
 
-//! A rigorous, cheap verdict for a transition between two lines (the corner C between the cut
-//! points A and B), used before sampling: a polynomial curve lies in the convex hull of its
-//! Bézier control points, and the distance to the chord A–B is convex, so no point of the curve
-//! is farther from that chord than the farthest control point. Every point of the chord is
-//! within dist(C, line AB) of the two lines when the triangle's angles at A and B are acute.
-//! Likewise the curve's velocity dq/ds lies in the hull of the derivative's control points: when
-//! all of them have a component of at least min_parametric_speed along one direction, so has
-//! the curve everywhere. Returns the deviation bound, or a negative value when it cannot decide
-//! (then the samples do).
-double hull_verdict(const PathSegment& curve, const Transition& t, const AxisVector& a, const AxisVector& b) {
-    if (t.replaced_before.shape != SegmentShape::line || t.replaced_after.shape != SegmentShape::line) return -1;
-    const AxisVector& c = t.replaced_after.origin;  // a line's start
-    std::array<double, 3> ab{};
-    std::array<double, 3> ac{};
-    std::array<double, 3> bc{};
-    double ab2 = 0;
-    for (std::size_t i = 0; i < 3; ++i) {
-        ab[i] = b[i] - a[i];
-        ac[i] = c[i] - a[i];
-        bc[i] = c[i] - b[i];
-        ab2 += ab[i] * ab[i];
-    }
-    double dot_a = 0;
-    double dot_b = 0;
-    for (std::size_t i = 0; i < 3; ++i) {
-        dot_a += ac[i] * ab[i];
-        dot_b -= bc[i] * ab[i];
-    }
-    if (!(ab2 > 0 && dot_a > 0 && dot_b > 0)) return -1;
-    // The roots are started early, so that their latency hides behind the control points.
-    const double inv = 1.0 / std::sqrt(ab2);
-    // Height of C over the line AB.
-    double h2 = 0;
-    const double along_c = dot_a / ab2;
-    for (std::size_t i = 0; i < 3; ++i) {
-        const double e = ac[i] - along_c * ab[i];
-        h2 += e * e;
-    }
-    const double height = std::sqrt(h2);
-    // Bernstein coefficients of the quintic in u = s/L: b_i = sum_k C(i,k)/C(5,k) a_k.
-    const double l = curve.length;
-    std::array<std::array<double, 3>, 6> ctrl{};
-    for (std::size_t i = 0; i < 3; ++i) {
-        const double a0 = curve.origin[i];
-        const double a1 = curve.rate[i] * l;
-        const double a2 = curve.poly[0][i] * l * l;
-        const double a3 = curve.poly[1][i] * l * l * l;
-        const double a4 = curve.poly[2][i] * l * l * l * l;
-        const double a5 = curve.poly[3][i] * l * l * l * l * l;
-        ctrl[0][i] = a0;
-        ctrl[1][i] = a0 + a1 / 5;
-        ctrl[2][i] = a0 + 2 * a1 / 5 + a2 / 10;
-        ctrl[3][i] = a0 + 3 * a1 / 5 + 3 * a2 / 10 + a3 / 10;
-        ctrl[4][i] = a0 + 4 * a1 / 5 + 6 * a2 / 10 + 4 * a3 / 10 + a4 / 5;
-        ctrl[5][i] = a0 + a1 + a2 + a3 + a4 + a5;
-    }
-    // The velocity's control points 5 (b_{i+1} - b_i) / L along the chord's direction.
-    for (std::size_t k = 0; k < 5; ++k) {
-        double along = 0;
-        for (std::size_t i = 0; i < 3; ++i) along += 5 * (ctrl[k + 1][i] - ctrl[k][i]) / l * ab[i] * inv;
-        if (!(along >= min_parametric_speed)) return -1;
-    }
-    // The first and the last control point are A and B themselves (on the chord).
-    double far2 = 0;
-    for (std::size_t k = 1; k < 5; ++k) {
-        double along = 0;
-        for (std::size_t i = 0; i < 3; ++i) along += (ctrl[k][i] - a[i]) * ab[i];
-        const double f = std::clamp(along / ab2, 0.0, 1.0);
-        double d2 = 0;
-        for (std::size_t i = 0; i < 3; ++i) {
-            const double e = ctrl[k][i] - a[i] - f * ab[i];
-            d2 += e * e;
-        }
-        far2 = std::max(far2, d2);
-    }
-    return std::sqrt(far2) + height;
-}
-
 //! The parameter length of the curve between the states: the mean of its chord and the trims,
 //! or, `chained` between two lines, the arc length of the circle with the end directions.
 double curve_length(const Transition& t, const PathPoint& a, const PathPoint& b, bool chained) {
@@ -260,7 +198,7 @@ double curve_length(const Transition& t, const PathPoint& a, const PathPoint& b,
 bool build_of_length(const Transition& t, const PathPoint& a, const PathPoint& b, double length, double tolerance_mm,
                      PathSegment& curve, double& deviation_mm) {
     write_quintic(curve, a, b, length, AxisVector{});
-    const double bound = hull_verdict(curve, t, a.position, b.position);
+    const double bound = hull_verdict(curve, t, a.position, b.position, min_parametric_speed);
     if (bound >= 0 && bound <= deviation_target * tolerance_mm) {
         deviation_mm = bound;
         return true;
@@ -310,8 +248,8 @@ bool single_quintic(const PathSegment& before, double before_room, const PathSeg
         trim_start_into(out.replaced_before, before, before.length - trim_a);
         out.replaced_after = after;
         out.replaced_after.length = trim_b;
-        out.start = point_at(before, before.length - trim_a);
-        out.end = point_at(after, trim_b);
+        point_into(out.start, before, before.length - trim_a);
+        point_into(out.end, after, trim_b);
         out.chained = false;
         if (chain != nullptr && trim_a == before.length) {
             // `before` is eaten: start with the curvature of the turn between the outer ends of

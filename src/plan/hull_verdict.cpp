@@ -1,0 +1,79 @@
+#include "hull_verdict.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace nckit::plan_detail {
+
+double hull_verdict(const PathSegment& curve, const Transition& t, const AxisVector& a, const AxisVector& b,
+                    double min_speed) {
+    if (t.replaced_before.shape != SegmentShape::line || t.replaced_after.shape != SegmentShape::line) return -1;
+    const AxisVector& c = t.replaced_after.origin;  // a line's start
+    std::array<double, 3> ab{};
+    std::array<double, 3> ac{};
+    std::array<double, 3> bc{};
+    double ab2 = 0;
+    for (std::size_t i = 0; i < 3; ++i) {
+        ab[i] = b[i] - a[i];
+        ac[i] = c[i] - a[i];
+        bc[i] = c[i] - b[i];
+        ab2 += ab[i] * ab[i];
+    }
+    double dot_a = 0;
+    double dot_b = 0;
+    for (std::size_t i = 0; i < 3; ++i) {
+        dot_a += ac[i] * ab[i];
+        dot_b -= bc[i] * ab[i];
+    }
+    if (!(ab2 > 0 && dot_a > 0 && dot_b > 0)) return -1;
+    // The roots are started early, so that their latency hides behind the control points.
+    const double inv = 1.0 / std::sqrt(ab2);
+    // Height of C over the line AB.
+    double h2 = 0;
+    const double along_c = dot_a / ab2;
+    for (std::size_t i = 0; i < 3; ++i) {
+        const double e = ac[i] - along_c * ab[i];
+        h2 += e * e;
+    }
+    const double height = std::sqrt(h2);
+    // Bernstein coefficients of the quintic in u = s/L: b_i = sum_k C(i,k)/C(5,k) a_k.
+    const double l = curve.length;
+    std::array<std::array<double, 3>, 6> ctrl{};
+    for (std::size_t i = 0; i < 3; ++i) {
+        const double a0 = curve.origin[i];
+        const double a1 = curve.rate[i] * l;
+        const double a2 = curve.poly[0][i] * l * l;
+        const double a3 = curve.poly[1][i] * l * l * l;
+        const double a4 = curve.poly[2][i] * l * l * l * l;
+        const double a5 = curve.poly[3][i] * l * l * l * l * l;
+        ctrl[0][i] = a0;
+        ctrl[1][i] = a0 + a1 / 5;
+        ctrl[2][i] = a0 + 2 * a1 / 5 + a2 / 10;
+        ctrl[3][i] = a0 + 3 * a1 / 5 + 3 * a2 / 10 + a3 / 10;
+        ctrl[4][i] = a0 + 4 * a1 / 5 + 6 * a2 / 10 + 4 * a3 / 10 + a4 / 5;
+        ctrl[5][i] = a0 + a1 + a2 + a3 + a4 + a5;
+    }
+    // The velocity's control points 5 (b_{i+1} - b_i) / L along the chord's direction.
+    for (std::size_t k = 0; k < 5; ++k) {
+        double along = 0;
+        for (std::size_t i = 0; i < 3; ++i) along += 5 * (ctrl[k + 1][i] - ctrl[k][i]) / l * ab[i] * inv;
+        if (!(along >= min_speed)) return -1;
+    }
+    // The first and the last control point are A and B themselves (on the chord).
+    double far2 = 0;
+    for (std::size_t k = 1; k < 5; ++k) {
+        double along = 0;
+        for (std::size_t i = 0; i < 3; ++i) along += (ctrl[k][i] - a[i]) * ab[i];
+        const double f = std::clamp(along / ab2, 0.0, 1.0);
+        double d2 = 0;
+        for (std::size_t i = 0; i < 3; ++i) {
+            const double e = ctrl[k][i] - a[i] - f * ab[i];
+            d2 += e * e;
+        }
+        far2 = std::max(far2, d2);
+    }
+    return std::sqrt(far2) + height;
+}
+
+}  // namespace nckit::plan_detail
