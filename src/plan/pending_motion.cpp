@@ -26,7 +26,8 @@ bool join_by_transition(PendingMotion& p, PendingMotion& next, double tolerance,
     // When t is chained, p is eaten by its two transitions: they meet at its middle, in its
     // direction, with the curvature of the turn between their outer ends (transition.hpp). The
     // one into p is rebuilt to end there; failing the tolerance, both stay as built (no curvature).
-    if (t.chained && !rebuild_with_end_state(*p.entry, xyz(t.start.d1), xyz(t.start.d2), tolerance) &&
+    if (t.chained &&
+        !rebuild_with_end_state(*p.entry, xyz(p.entry->end.position), xyz(t.start.d1), xyz(t.start.d2), tolerance) &&
         !make_transition(p.path, before_room, next.path, after_room, tolerance, t, nullptr, turning)) {
         next.entry.reset();
         return false;

@@ -293,35 +293,38 @@ bool make_transition(const PathSegment& before, double before_room, const PathSe
     return true;
 }
 
-bool rebuild_with_end_state(Transition& transition, const std::array<double, 3>& end_d1,
-                            const std::array<double, 3>& end_d2, double tolerance_mm) {
+bool rebuild_with_end_state(Transition& transition, const std::array<double, 3>& end_position,
+                            const std::array<double, 3>& end_d1, const std::array<double, 3>& end_d2,
+                            double tolerance_mm) {
     // Built in place. Failing, the end state is put back and the curve with it: a chained curve
     // is the quintic between its states with its own length (single_quintic), so building it
     // again gives the same numbers; any other curve is kept as a copy.
     PathPoint& end = transition.end;
+    const std::array<double, 3> old_position{end.position[0], end.position[1], end.position[2]};
     const std::array<double, 3> old_d1{end.d1[0], end.d1[1], end.d1[2]};
     const std::array<double, 3> old_d2{end.d2[0], end.d2[1], end.d2[2]};
     const double old_length = transition.curve.length;
     std::optional<PathSegment> kept;
     if (!transition.chained) kept = transition.curve;
-    // A chained transition keeps its end points and, on a chain of lines, its end directions:
-    // then its length is the one curve_length gave it, which needs no trigonometry again.
-    const bool same_directions = end_d1[0] == old_d1[0] && end_d1[1] == old_d1[1] && end_d1[2] == old_d1[2];
-    for (std::size_t i = 0; i < 3; ++i) {
-        end.d1[i] = end_d1[i];
-        end.d2[i] = end_d2[i];
-    }
-    const double length =
-        transition.chained && same_directions ? old_length : curve_length(transition, transition.start, end, true);
+    // A chained transition that keeps its end point and direction keeps the length curve_length
+    // gave it (which needs no trigonometry again).
+    const bool same_length = transition.chained && end_position == old_position && end_d1 == old_d1;
+    auto set_end = [&](const std::array<double, 3>& position, const std::array<double, 3>& d1,
+                       const std::array<double, 3>& d2) {
+        for (std::size_t i = 0; i < 3; ++i) {
+            end.position[i] = position[i];
+            end.d1[i] = d1[i];
+            end.d2[i] = d2[i];
+        }
+    };
+    set_end(end_position, end_d1, end_d2);
+    const double length = same_length ? old_length : curve_length(transition, transition.start, end, true);
     double deviation_mm = 0;
     if (build_of_length(transition, transition.start, end, length, tolerance_mm, transition.curve, deviation_mm)) {
         transition.deviation_mm = deviation_mm;
         return true;
     }
-    for (std::size_t i = 0; i < 3; ++i) {
-        end.d1[i] = old_d1[i];
-        end.d2[i] = old_d2[i];
-    }
+    set_end(old_position, old_d1, old_d2);
     if (kept) {
         transition.curve = *kept;
     } else {

@@ -36,16 +36,17 @@ struct Transition {
     bool chained = false;           //!< starts with a ChainStart's curvature (make_transition)
 };
 
-//! Rebuilds the transition to end with the given direction and curvature vectors (dq/ds and
-//! d²q/ds² on XYZ), when it still keeps within tolerance_mm; false leaves it as it was. A chain of
-//! transitions that eats whole short lines (a CAM polyline) meets at the lines' middles; there
-//! the two transitions may agree on any state. With the direction of the chord through the
-//! neighbouring joins and the curvature of the turn between them (instead of the line's own
-//! direction and 0), the chain follows the curve the polyline samples, and its speed is set by
-//! that curve's radius rather than by a curvature pulse at every vertex and the rounding noise of
-//! the written decimals. The start state stays.
-[[nodiscard]] bool rebuild_with_end_state(Transition& transition, const std::array<double, 3>& end_d1,
-                                          const std::array<double, 3>& end_d2, double tolerance_mm);
+//! Rebuilds the transition to end at `end_position` with the given direction and curvature
+//! vectors (XYZ; dq/ds and d²q/ds²), when it still keeps within tolerance_mm; false leaves it as
+//! it was. A chain of transitions that eats whole short lines (a CAM polyline) meets at the
+//! lines' middles; there the two transitions may agree on any state. With the direction of the
+//! chord through the neighbouring joins and the curvature of the turn between them (instead of
+//! the line's own direction and 0), the chain follows the curve the polyline samples, and its
+//! speed is set by that curve's radius rather than by a curvature pulse at every vertex and the
+//! rounding noise of the written decimals. The start state stays.
+[[nodiscard]] bool rebuild_with_end_state(Transition& transition, const std::array<double, 3>& end_position,
+                                          const std::array<double, 3>& end_d1, const std::array<double, 3>& end_d2,
+                                          double tolerance_mm);
 
 //! The transition that trims at most before_room from before's end and after_room from
 //! after's start (a leftover of before shorter than min_leftover_mm is taken whole), as long
