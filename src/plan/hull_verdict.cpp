@@ -47,11 +47,19 @@ double hull_verdict(const PathSegment& curve, const Transition& t, const AxisVec
         const double a3 = curve.poly[1][i] * l * l * l;
         const double a4 = curve.poly[2][i] * l * l * l * l;
         const double a5 = curve.poly[3][i] * l * l * l * l * l;
+        // Six divisions where the formula has ten: scaling by a power of two is exact and
+        // commutes with rounding, so 2·a1/5 = 2·(a1/5), a2/10 = (a2/5)/2, 6·a2/10 = 3·a2/5,
+        // 3·a2/10 = (3·a2/5)/2, 4·a3/10 = 2·(a3/5) and a3/10 = (a3/5)/2, the same numbers
+        // (outside the subnormal range, far below any coordinate).
+        const double a1_5 = a1 / 5;
+        const double a2_5 = a2 / 5;
+        const double a2_3_5 = 3 * a2 / 5;
+        const double a3_5 = a3 / 5;
         ctrl[0][i] = a0;
-        ctrl[1][i] = a0 + a1 / 5;
-        ctrl[2][i] = a0 + 2 * a1 / 5 + a2 / 10;
-        ctrl[3][i] = a0 + 3 * a1 / 5 + 3 * a2 / 10 + a3 / 10;
-        ctrl[4][i] = a0 + 4 * a1 / 5 + 6 * a2 / 10 + 4 * a3 / 10 + a4 / 5;
+        ctrl[1][i] = a0 + a1_5;
+        ctrl[2][i] = a0 + 2 * a1_5 + a2_5 / 2;
+        ctrl[3][i] = a0 + 3 * a1 / 5 + a2_3_5 / 2 + a3_5 / 2;
+        ctrl[4][i] = a0 + 4 * a1_5 + a2_3_5 + 2 * a3_5 + a4 / 5;
         ctrl[5][i] = a0 + a1 + a2 + a3 + a4 + a5;
     }
     // The velocity's control points 5 (b_{i+1} - b_i) / L along the chord's direction.
