@@ -33,7 +33,7 @@ bool join_by_transition(PendingMotion& p, PendingMotion& next, double tolerance,
         return false;
     }
     p.path.length -= t.trim_before;
-    next.path = trim_start(next.path, t.trim_after);
+    trim_start_into(next.path, next.path, t.trim_after);
     next.entry_feed_mm_s = std::min(p.feed_mm_s, next.feed_mm_s);
     next.entry_where = p.where;
     next.entry_number = p.sequence_number;

@@ -38,18 +38,6 @@ bool is_line(const PathSegment& g) {
     return g.shape != SegmentShape::quintic && !(g.radius_mm > 0);
 }
 
-//! trim_start(g, trim) written to `out`: a line is copied once (the value trim_start returns
-//! would be copied again).
-void trim_start_into(PathSegment& out, const PathSegment& g, double trim) {
-    if (!is_line(g)) {
-        out = trim_start(g, trim);
-        return;
-    }
-    out = g;
-    out.length = g.length - trim;
-    out.origin = position_at(g, trim);
-}
-
 //! point_at(g, s) written to `out`; a line's directly (the value point_at returns would be
 //! copied again).
 void point_into(PathPoint& out, const PathSegment& g, double s) {
@@ -104,6 +92,17 @@ void measure_into(const PathSegment& curve, const Piece& tail, const Piece& head
                   CurveDeviation& out);
 
 }  // namespace
+
+void trim_start_into(PathSegment& out, const PathSegment& g, double trim) {
+    if (!is_line(g)) {
+        out = trim_start(g, trim);
+        return;
+    }
+    const AxisVector origin = position_at(g, trim);
+    if (&out != &g) out = g;
+    out.length = g.length - trim;
+    out.origin = origin;
+}
 
 bool smooth_join(const PathSegment& before, const PathSegment& after, double direction_tolerance, bool curvature_too) {
     if (is_line(before) && is_line(after)) {

@@ -11,6 +11,10 @@
 
 namespace nckit::plan_detail {
 
+//! trim_start(g, trim) written to `out` (which may be g): a line is copied at most once (the value
+//! trim_start returns would be copied again).
+void trim_start_into(PathSegment& out, const PathSegment& g, double trim);
+
 //! The join passes at speed without a transition: directions (dq/ds, every axis) equal within
 //! direction_tolerance, and, when `curvature_too`, curvature vectors (d²q/ds²) within
 //! curvature_tolerance (1/mm).
