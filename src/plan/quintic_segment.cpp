@@ -103,8 +103,10 @@ double largest(std::array<double, bound_samples>& x) {
     static_assert(bound_samples == 24);
     for (std::size_t k = 0; k < 12; ++k) x[k] = std::max(x[k], x[k + 12]);
     for (std::size_t k = 0; k < 6; ++k) x[k] = std::max(x[k], x[k + 6]);
-    for (std::size_t k = 0; k < 3; ++k) x[k] = std::max(x[k], x[k + 3]);
-    return std::max(x[0], std::max(x[1], x[2]));
+    // In pairs from here (not halves of 6): reading back across two of the paired stores
+    // stalls the load.
+    for (std::size_t k = 0; k < 2; ++k) x[k] = std::max(std::max(x[k], x[k + 2]), x[k + 4]);
+    return std::max(x[0], x[1]);
 }
 constexpr double bound_pad = 1e-12;
 //! k + 1 at k, as doubles: a table, since converting an unsigned index to double takes several
@@ -140,7 +142,7 @@ DerivativeBounds quintic_bounds(const PathSegment& g) {
     const double l = g.length;
     for (std::size_t i = 3; i < axis_count; ++i) b.d1[i] = std::abs(g.rate[i]);
     double d2_norm2 = 0;
-    std::array<std::array<double, 5>, 3> control{};
+    std::array<std::array<double, 5>, 3> control;  // every element set below
     std::array<double, 3> hull{};
     std::array<bool, 3> sample_axis{};
     for (std::size_t i = 0; i < 3; ++i) {
@@ -175,7 +177,7 @@ DerivativeBounds quintic_bounds(const PathSegment& g) {
     // The samples after the start (s = h·k, k = 1..24) in flat arrays the compiler vectorises; at
     // s = 0, q' is c1. An axis that does not move adds nothing. The largest of a set does not
     // depend on the order it is searched in: by halving.
-    std::array<double, bound_samples> at{};
+    std::array<double, bound_samples> at;  // every element set below
     for (std::size_t k = 0; k < bound_samples; ++k) at[k] = h * sample_index[k];
     std::array<double, bound_samples> speed2{};
     double speed2_start = 0;
@@ -187,7 +189,7 @@ DerivativeBounds quintic_bounds(const PathSegment& g) {
         const double c3 = 3 * g.poly[1][i];
         const double c4 = 4 * g.poly[2][i];
         const double c5 = g.poly[3][i];
-        std::array<double, bound_samples> slope{};
+        std::array<double, bound_samples> slope;  // every element set below
         for (std::size_t k = 0; k < bound_samples; ++k) {
             const double s = at[k];
             slope[k] = c1 + s * (c2 + s * (c3 + s * (c4 + s * 5 * c5)));
