@@ -145,12 +145,18 @@ DerivativeBounds quintic_bounds(const PathSegment& g) {
     std::array<std::array<double, 5>, 3> control;  // every element set below
     std::array<double, 3> hull{};
     std::array<bool, 3> sample_axis{};
+    std::array<bool, 3> moves{};
     for (std::size_t i = 0; i < 3; ++i) {
         const double c1 = g.rate[i];
         const double c2 = g.poly[0][i];
         const double c3 = g.poly[1][i];
         const double c4 = g.poly[2][i];
         const double c5 = g.poly[3][i];
+        if (c1 == 0 && c2 == 0 && c3 == 0 && c4 == 0 && c5 == 0) {
+            control[i] = {};  // an axis that stands: every bound 0, as computed they come out 0
+            continue;
+        }
+        moves[i] = true;
         b.d3[i] = max_abs_quadratic(6 * c3, 24 * c4, 60 * c5, l) * (1 + bound_pad);
         b.d2[i] = max_abs_cubic(2 * c2, 6 * c3, 12 * c4, 20 * c5, l) * (1 + bound_pad);
         d2_norm2 += b.d2[i] * b.d2[i];
@@ -184,7 +190,7 @@ DerivativeBounds quintic_bounds(const PathSegment& g) {
     std::array<double, 3> most{};
     for (std::size_t i = 0; i < 3; ++i) {
         const double c1 = g.rate[i];
-        if (c1 == 0 && g.poly[0][i] == 0 && g.poly[1][i] == 0 && g.poly[2][i] == 0 && g.poly[3][i] == 0) continue;
+        if (!moves[i]) continue;
         const double c2 = 2 * g.poly[0][i];
         const double c3 = 3 * g.poly[1][i];
         const double c4 = 4 * g.poly[2][i];
