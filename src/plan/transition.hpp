@@ -93,7 +93,7 @@ struct TurningLimits {
 //! The transition is written to `out` (which it leaves undefined when there is none). With
 //! `chain`, when `before` is eaten whole, the curve first tries to start with the chain's
 //! curvature (out.chained tells whether it does; the transition into before must then be rebuilt
-//! to end in out.start's state, with_end_states). With `turning` (jerk-limited plans), a tangent
+//! to end in out.start's state, rebuild_with_end_state). With `turning` (jerk-limited plans), a tangent
 //! join of an arc whose curvature jumps also gets a ramp transition (ramp_transition.hpp), kept
 //! when its curves allow a higher speed (turning_speed) than the single quintic's.
 [[nodiscard]] bool make_transition(const PathSegment& before, double before_room, const PathSegment& after,
