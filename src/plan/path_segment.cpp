@@ -260,7 +260,9 @@ PathSegment make_line(const AxisVector& from, const AxisVector& to) {
     const AxisVector d = to - from;
     g.length = measured_length(d);
     if (g.length > 0) {
-        for (std::size_t i = 0; i < axis_count; ++i) g.rate[i] = d[i] / g.length;
+        // An axis that does not move keeps its (signed) zero: the same number as 0 / length,
+        // without a division for each of the standing axes of every line.
+        for (std::size_t i = 0; i < axis_count; ++i) g.rate[i] = d[i] == 0 ? d[i] : d[i] / g.length;
     }
     return g;
 }

@@ -81,28 +81,20 @@ bool join_by_transition(PendingMotion& p, PendingMotion& next, double tolerance,
         next.entry.reset();
         return false;
     }
-    if (t.chained) {
-        // p is eaten by its two transitions: they meet at its middle, in its direction, with
-        // the curvature of the turn between their outer ends (transition.hpp). The one into p
-        // is rebuilt to end there; failing the tolerance, both stay as built (no curvature).
-        // The meeting point lies on the curve the chain samples (chain_state.hpp), not on p.
-        // The entry keeps the tolerance it was built within (p's may be wider).
-        const AxisVector entry_end = p.entry->end.position;
-        for (std::size_t i = 0; i < 3; ++i) p.entry->end.position[i] = t.start.position[i];
-        const auto entry = with_end_states(*p.entry, xyz(p.entry->start.d1), xyz(p.entry->start.d2), xyz(t.start.d1),
-                                           xyz(t.start.d2), std::min(tolerance, p.entry_tolerance_mm));
-        if (entry) {
-            apply(*p.entry, *entry);
-        } else {
-            p.entry->end.position = entry_end;
-            if (!make_transition(p.path, before_room, next.path, after_room, tolerance, t, nullptr, turning)) {
-                next.entry.reset();
-                return false;
-            }
-        }
+    // When t is chained, p is eaten by its two transitions: they meet at its middle, in its
+    // direction, with the curvature of the turn between their outer ends (transition.hpp). The
+    // one into p is rebuilt to end there; failing the tolerance, both stay as built (no curvature).
+    // The meeting point lies on the curve the chain samples (chain_state.hpp), not on p.
+    // The entry keeps the tolerance it was built within (p's may be wider).
+    if (t.chained &&
+        !rebuild_with_end_state(*p.entry, xyz(t.start.position), xyz(t.start.d1), xyz(t.start.d2),
+                                std::min(tolerance, p.entry_tolerance_mm)) &&
+        !make_transition(p.path, before_room, next.path, after_room, tolerance, t, nullptr, turning)) {
+        next.entry.reset();
+        return false;
     }
     p.path.length -= t.trim_before;
-    next.path = trim_start(next.path, t.trim_after);
+    trim_start_into(next.path, next.path, t.trim_after);
     next.entry_feed_mm_s = std::min(p.feed_mm_s, next.feed_mm_s);
     next.entry_tolerance_mm = tolerance;
     next.entry_where = p.where;

@@ -12,6 +12,28 @@
 
 namespace nckit::plan_detail {
 
+//! A transition that may be absent, like std::optional, but whose storage outlives reset():
+//! a transition is about 1.6 kB, and constructing a fresh (zeroed) one for every move of a CAM
+//! chain cost more than building the curve in it. emplace() hands back the storage as the last
+//! transition left it; make_transition sets every field of it.
+class TransitionSlot {
+public:
+    [[nodiscard]] explicit operator bool() const { return engaged_; }
+    [[nodiscard]] Transition& operator*() { return value_; }
+    [[nodiscard]] const Transition& operator*() const { return value_; }
+    [[nodiscard]] Transition* operator->() { return &value_; }
+    [[nodiscard]] const Transition* operator->() const { return &value_; }
+    Transition& emplace() {
+        engaged_ = true;
+        return value_;
+    }
+    void reset() { engaged_ = false; }
+
+private:
+    Transition value_;
+    bool engaged_ = false;
+};
+
 //! The last motion, whose end may still be trimmed by a blend with the next one.
 struct PendingMotion {
     PathSegment path;
@@ -28,7 +50,7 @@ struct PendingMotion {
     std::int64_t sequence_number = -1;
     //! The transition into this motion, held back until the next join is known: when that
     //! join's transition eats the whole of this motion, both meet with a common curvature.
-    std::optional<Transition> entry;
+    TransitionSlot entry;
     double entry_feed_mm_s = 0;
     double entry_tolerance_mm = 0;  //!< mm, the tolerance it was built within
     SourceLocation entry_where;

@@ -8,12 +8,16 @@
 
 namespace nckit {
 
-PathSegment make_quintic(const PathPoint& start, const PathPoint& end, double length, const AxisVector& other_rate) {
-    PathSegment g;
+void write_quintic(PathSegment& g, const PathPoint& start, const PathPoint& end, double length,
+                   const AxisVector& other_rate) {
     g.shape = SegmentShape::quintic;
     g.length = length;
     g.origin = start.position;
     for (std::size_t i = 3; i < axis_count; ++i) g.rate[i] = other_rate[i];
+    g.u = {};
+    g.v = {};
+    g.radius_mm = 0;
+    g.angle_rate = 0;
     // In u = s / L: p(u) = Σ a_k u^k with p, p', p'' given at u = 0 and 1 (derivatives in u are
     // L and L² times those in s). The coefficients in s are a_k / L^k.
     const double l = length;
@@ -32,6 +36,11 @@ PathSegment make_quintic(const PathPoint& start, const PathPoint& end, double le
         g.poly[2][i] = a4 / (l * l * l * l);
         g.poly[3][i] = a5 / (l * l * l * l * l);
     }
+}
+
+PathSegment make_quintic(const PathPoint& start, const PathPoint& end, double length, const AxisVector& other_rate) {
+    PathSegment g;
+    write_quintic(g, start, end, length, other_rate);
     return g;
 }
 
@@ -87,8 +96,23 @@ double max_abs_cubic(double c0, double c1, double c2, double c3, double l) {
     return m;
 }
 
-constexpr int bound_samples = 24;
+constexpr std::size_t bound_samples = 24;
+
+//! The largest of the samples (destroys them): the halves compared element by element.
+double largest(std::array<double, bound_samples>& x) {
+    static_assert(bound_samples == 24);
+    for (std::size_t k = 0; k < 12; ++k) x[k] = std::max(x[k], x[k + 12]);
+    for (std::size_t k = 0; k < 6; ++k) x[k] = std::max(x[k], x[k + 6]);
+    // In pairs from here (not halves of 6): reading back across two of the paired stores
+    // stalls the load.
+    for (std::size_t k = 0; k < 2; ++k) x[k] = std::max(std::max(x[k], x[k + 2]), x[k + 4]);
+    return std::max(x[0], x[1]);
+}
 constexpr double bound_pad = 1e-12;
+//! k + 1 at k, as doubles: a table, since converting an unsigned index to double takes several
+//! instructions per sample.
+constexpr std::array<double, bound_samples> sample_index = {1,  2,  3,  4,  5,  6,  7,  8,  9,  10, 11, 12,
+                                                            13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23, 24};
 
 //! The control points (Bernstein coefficients on u = s/L in [0, 1]) of q' = c1 + 2c2 s + 3c3 s²
 //! + 4c4 s³ + 5c5 s⁴ on one axis: q' lies between the smallest and the largest of them.
@@ -118,58 +142,76 @@ DerivativeBounds quintic_bounds(const PathSegment& g) {
     const double l = g.length;
     for (std::size_t i = 3; i < axis_count; ++i) b.d1[i] = std::abs(g.rate[i]);
     double d2_norm2 = 0;
-    const double h = l / bound_samples;
-    std::array<std::array<double, 5>, 3> control{};
+    std::array<std::array<double, 5>, 3> control;  // every element set below
+    std::array<double, 3> hull{};
+    std::array<bool, 3> sample_axis{};
+    std::array<bool, 3> moves{};
     for (std::size_t i = 0; i < 3; ++i) {
         const double c1 = g.rate[i];
         const double c2 = g.poly[0][i];
         const double c3 = g.poly[1][i];
         const double c4 = g.poly[2][i];
         const double c5 = g.poly[3][i];
+        if (c1 == 0 && c2 == 0 && c3 == 0 && c4 == 0 && c5 == 0) {
+            control[i] = {};  // an axis that stands: every bound 0, as computed they come out 0
+            continue;
+        }
+        moves[i] = true;
         b.d3[i] = max_abs_quadratic(6 * c3, 24 * c4, 60 * c5, l) * (1 + bound_pad);
         b.d2[i] = max_abs_cubic(2 * c2, 6 * c3, 12 * c4, 20 * c5, l) * (1 + bound_pad);
         d2_norm2 += b.d2[i] * b.d2[i];
         control[i] = slope_control_points(c1, c2, c3, c4, c5, l);
-        double hull = 0;
-        for (double c : control[i]) hull = std::max(hull, std::abs(c));
+        for (double c : control[i]) hull[i] = std::max(hull[i], std::abs(c));
         const double ends = std::max(std::abs(control[i][0]), std::abs(control[i][4]));
-        if (tight(hull, ends)) {
-            b.d1[i] = hull * (1 + bound_pad);
-            continue;
-        }
-        // q' sampled; between samples it moves by at most d2 · h/2 from the nearer one.
-        double m = 0;
-        for (int k = 0; k <= bound_samples; ++k) {
-            const double s = h * k;
-            m = std::max(m, std::abs(c1 + s * (2 * c2 + s * (3 * c3 + s * (4 * c4 + s * 5 * c5)))));
-        }
-        b.d1[i] = std::min(hull, m + b.d2[i] * h / 2) * (1 + bound_pad);
+        sample_axis[i] = !tight(hull[i], ends);
+        if (!sample_axis[i]) b.d1[i] = hull[i] * (1 + bound_pad);
     }
-    // |p'| is convex in p', so it is at most the largest norm of the control points.
-    double hull = 0;
-    for (std::size_t k = 0; k < 5; ++k) {
-        hull = std::max(hull, std::sqrt(control[0][k] * control[0][k] + control[1][k] * control[1][k] +
-                                        control[2][k] * control[2][k]));
-    }
-    auto norm_at = [&](std::size_t k) {
-        return std::sqrt(control[0][k] * control[0][k] + control[1][k] * control[1][k] + control[2][k] * control[2][k]);
+    // |p'| is convex in p', so it is at most the largest norm of the control points. Squares are
+    // compared and one root taken: the root is monotonic, so the maximum is the same number.
+    auto norm2_at = [&](std::size_t k) {
+        return control[0][k] * control[0][k] + control[1][k] * control[1][k] + control[2][k] * control[2][k];
     };
-    if (tight(hull, std::max(norm_at(0), norm_at(4)))) {
-        b.speed_factor = hull * (1 + bound_pad);
-        return b;
-    }
-    double speed = 0;
-    for (int k = 0; k <= bound_samples; ++k) {
-        const double s = h * k;
-        double speed2 = 0;
-        for (std::size_t i = 0; i < 3; ++i) {
-            const double d1 = g.rate[i] + s * (2 * g.poly[0][i] +
-                                               s * (3 * g.poly[1][i] + s * (4 * g.poly[2][i] + s * 5 * g.poly[3][i])));
-            speed2 += d1 * d1;
+    double speed_hull2 = 0;
+    for (std::size_t k = 0; k < 5; ++k) speed_hull2 = std::max(speed_hull2, norm2_at(k));
+    const double speed_hull = std::sqrt(speed_hull2);
+    const bool sample_speed = !tight(speed_hull, std::sqrt(std::max(norm2_at(0), norm2_at(4))));
+    if (!sample_speed) b.speed_factor = speed_hull * (1 + bound_pad);
+    if (!(sample_speed || sample_axis[0] || sample_axis[1] || sample_axis[2])) return b;
+    // q' sampled on all three axes at once (independent sums, one root at the end); between
+    // samples q' moves by at most d2 · h/2 from the nearer one, |p'| by at most |d2| · h/2.
+    const double h = l / static_cast<double>(bound_samples);
+    // The samples after the start (s = h·k, k = 1..24) in flat arrays the compiler vectorises; at
+    // s = 0, q' is c1. An axis that does not move adds nothing. The largest of a set does not
+    // depend on the order it is searched in: by halving.
+    std::array<double, bound_samples> at;  // every element set below
+    for (std::size_t k = 0; k < bound_samples; ++k) at[k] = h * sample_index[k];
+    std::array<double, bound_samples> speed2{};
+    double speed2_start = 0;
+    std::array<double, 3> most{};
+    for (std::size_t i = 0; i < 3; ++i) {
+        const double c1 = g.rate[i];
+        if (!moves[i]) continue;
+        const double c2 = 2 * g.poly[0][i];
+        const double c3 = 3 * g.poly[1][i];
+        const double c4 = 4 * g.poly[2][i];
+        const double c5 = g.poly[3][i];
+        std::array<double, bound_samples> slope;  // every element set below
+        for (std::size_t k = 0; k < bound_samples; ++k) {
+            const double s = at[k];
+            slope[k] = c1 + s * (c2 + s * (c3 + s * (c4 + s * 5 * c5)));
         }
-        speed = std::max(speed, std::sqrt(speed2));
+        for (std::size_t k = 0; k < bound_samples; ++k) speed2[k] += slope[k] * slope[k];
+        speed2_start += c1 * c1;
+        for (double& d : slope) d = std::abs(d);
+        most[i] = std::max(std::abs(c1), largest(slope));
     }
-    b.speed_factor = std::min(hull, speed + std::sqrt(d2_norm2) * h / 2) * (1 + bound_pad);
+    const double speed2_most = std::max(speed2_start, largest(speed2));
+    for (std::size_t i = 0; i < 3; ++i) {
+        if (sample_axis[i]) b.d1[i] = std::min(hull[i], most[i] + b.d2[i] * h / 2) * (1 + bound_pad);
+    }
+    if (sample_speed) {
+        b.speed_factor = std::min(speed_hull, std::sqrt(speed2_most) + std::sqrt(d2_norm2) * h / 2) * (1 + bound_pad);
+    }
     return b;
 }
 

@@ -2,10 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <utility>
 
 #include "chain_state.hpp"
 #include "chord_distance.hpp"
+#include "hull_verdict.hpp"
+#include "quintic_bounds.hpp"
 #include "ramp_transition.hpp"
 
 namespace nckit::plan_detail {
@@ -30,6 +33,26 @@ constexpr double min_trim_mm = 1e-7;
 constexpr double ramp_speed_margin = 1.005;
 // Chained transitions take an arc-length parameter up to this half turn between their ends.
 constexpr double chained_max_half_turn_rad = 0.5;
+
+//! What point_at takes for a line: no circular and no polynomial part.
+bool is_line(const PathSegment& g) {
+    return g.shape != SegmentShape::quintic && !(g.radius_mm > 0);
+}
+
+//! point_at(g, s) written to `out`; a line's directly (the value point_at returns would be
+//! copied again).
+void point_into(PathPoint& out, const PathSegment& g, double s) {
+    if (!is_line(g)) {
+        out = point_at(g, s);
+        return;
+    }
+    for (std::size_t i = 0; i < axis_count; ++i) {
+        out.position[i] = g.origin[i] + g.rate[i] * s;
+        out.d1[i] = g.rate[i];
+        out.d2[i] = 0;
+        out.d3[i] = 0;
+    }
+}
 
 double distance3(const AxisVector& a, const AxisVector& b) {
     return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
@@ -71,7 +94,25 @@ void measure_into(const PathSegment& curve, const Piece& tail, const Piece& head
 
 }  // namespace
 
+void trim_start_into(PathSegment& out, const PathSegment& g, double trim) {
+    if (!is_line(g)) {
+        out = trim_start(g, trim);
+        return;
+    }
+    const AxisVector origin = position_at(g, trim);
+    if (&out != &g) out = g;
+    out.length = g.length - trim;
+    out.origin = origin;
+}
+
 bool smooth_join(const PathSegment& before, const PathSegment& after, double direction_tolerance, bool curvature_too) {
+    if (is_line(before) && is_line(after)) {
+        // A line's direction is its rate everywhere and its curvature 0 (point_at).
+        for (std::size_t i = 0; i < axis_count; ++i) {
+            if (std::abs(before.rate[i] - after.rate[i]) > direction_tolerance) return false;
+        }
+        return true;
+    }
     const PathPoint e = point_at(before, before.length);
     const PathPoint s = point_at(after, 0.0);
     for (std::size_t i = 0; i < axis_count; ++i) {
@@ -128,122 +169,9 @@ void measure_into(const PathSegment& curve, const Piece& tail, const Piece& head
 
 namespace {
 
-//! A rigorous, cheap verdict for a transition between two lines (the corner C between the cut
-//! points A and B), used before sampling: a polynomial curve lies in the convex hull of its
-//! Bézier control points, and the distance to the chord A–B is convex, so no point of the curve
-//! is farther from that chord than the farthest control point. Every point of the chord is
-//! within dist(C, line AB) of the two lines when the triangle's angles at A and B are acute.
-//! Likewise the curve's velocity dq/ds lies in the hull of the derivative's control points: when
-//! all of them have a component of at least min_parametric_speed along one direction, so has
-//! the curve everywhere. Returns the deviation bound, or a negative value when it cannot decide
-//! (then the samples do).
-double hull_verdict(const PathSegment& curve, const Transition& t, const AxisVector& a, const AxisVector& b) {
-    if (t.replaced_before.shape != SegmentShape::line || t.replaced_after.shape != SegmentShape::line) return -1;
-    const AxisVector& c = t.replaced_after.origin;  // a line's start
-    // A chained meeting point may lie off its line (moved onto the curve, chain_state.hpp): the
-    // height is taken over the chord between the feet A', B' on the lines, and every point of
-    // the chord A–B lies within the larger offset of the chord A'–B'.
-    double along_a = 0;
-    double along_b = 0;
-    for (std::size_t i = 0; i < 3; ++i) {
-        along_a += (a[i] - c[i]) * t.replaced_before.rate[i];
-        along_b += (b[i] - c[i]) * t.replaced_after.rate[i];
-    }
-    // The feet lie on the replaced pieces, A' before C and B' after it (up to rounding: a
-    // nanometre past a piece's end, which the bound adds).
-    constexpr double slack_mm = 1e-9;
-    if (!(along_a <= slack_mm && -along_a <= t.replaced_before.length + slack_mm && along_b >= -slack_mm &&
-          along_b <= t.replaced_after.length + slack_mm)) {
-        return -1;
-    }
-    std::array<double, 3> ab{};
-    std::array<double, 3> ac{};
-    std::array<double, 3> bc{};
-    double feet2 = 0;
-    double off_a2 = 0;
-    double off_b2 = 0;
-    for (std::size_t i = 0; i < 3; ++i) {
-        const double foot_a = c[i] + along_a * t.replaced_before.rate[i];
-        const double foot_b = c[i] + along_b * t.replaced_after.rate[i];
-        off_a2 += (a[i] - foot_a) * (a[i] - foot_a);
-        off_b2 += (b[i] - foot_b) * (b[i] - foot_b);
-        ab[i] = foot_b - foot_a;
-        ac[i] = c[i] - foot_a;
-        bc[i] = c[i] - foot_b;
-        feet2 += ab[i] * ab[i];
-    }
-    double dot_a = 0;
-    double dot_b = 0;
-    for (std::size_t i = 0; i < 3; ++i) {
-        dot_a += ac[i] * ab[i];
-        dot_b -= bc[i] * ab[i];
-    }
-    if (!(feet2 > 0 && dot_a > 0 && dot_b > 0)) return -1;
-    // Height of C over the line A'B'.
-    double h2 = 0;
-    for (std::size_t i = 0; i < 3; ++i) {
-        const double e = ac[i] - dot_a / feet2 * ab[i];
-        h2 += e * e;
-    }
-    const double off = std::sqrt(std::max(off_a2, off_b2));
-    double ab2 = 0;
-    for (std::size_t i = 0; i < 3; ++i) {
-        ab[i] = b[i] - a[i];
-        ab2 += ab[i] * ab[i];
-    }
-    if (!(ab2 > 0)) return -1;
-    // Bernstein coefficients of the quintic in u = s/L: b_i = sum_k C(i,k)/C(5,k) a_k.
-    const double l = curve.length;
-    std::array<std::array<double, 3>, 6> ctrl{};
-    for (std::size_t i = 0; i < 3; ++i) {
-        const double a0 = curve.origin[i];
-        const double a1 = curve.rate[i] * l;
-        const double a2 = curve.poly[0][i] * l * l;
-        const double a3 = curve.poly[1][i] * l * l * l;
-        const double a4 = curve.poly[2][i] * l * l * l * l;
-        const double a5 = curve.poly[3][i] * l * l * l * l * l;
-        ctrl[0][i] = a0;
-        ctrl[1][i] = a0 + a1 / 5;
-        ctrl[2][i] = a0 + 2 * a1 / 5 + a2 / 10;
-        ctrl[3][i] = a0 + 3 * a1 / 5 + 3 * a2 / 10 + a3 / 10;
-        ctrl[4][i] = a0 + 4 * a1 / 5 + 6 * a2 / 10 + 4 * a3 / 10 + a4 / 5;
-        ctrl[5][i] = a0 + a1 + a2 + a3 + a4 + a5;
-    }
-    // The first and the last control point are A and B themselves (on the chord).
-    double far2 = 0;
-    for (std::size_t k = 1; k < 5; ++k) {
-        double along = 0;
-        for (std::size_t i = 0; i < 3; ++i) along += (ctrl[k][i] - a[i]) * ab[i];
-        const double f = std::clamp(along / ab2, 0.0, 1.0);
-        double d2 = 0;
-        for (std::size_t i = 0; i < 3; ++i) {
-            const double e = ctrl[k][i] - a[i] - f * ab[i];
-            d2 += e * e;
-        }
-        far2 = std::max(far2, d2);
-    }
-    const double far = std::sqrt(far2);
-    // The velocity's control points 5 (b_{i+1} - b_i) / L along the mean of the end directions.
-    std::array<double, 3> mean{};
-    double mean2 = 0;
-    for (std::size_t i = 0; i < 3; ++i) {
-        mean[i] = ab[i];
-        mean2 += mean[i] * mean[i];
-    }
-    const double inv = 1.0 / std::sqrt(mean2);
-    for (std::size_t k = 0; k < 5; ++k) {
-        double along = 0;
-        for (std::size_t i = 0; i < 3; ++i) along += 5 * (ctrl[k + 1][i] - ctrl[k][i]) / l * mean[i] * inv;
-        if (!(along >= min_parametric_speed)) return -1;
-    }
-    return far + std::sqrt(h2) + off + slack_mm;
-}
-
-//! Builds the curve between the states and measures it against the replaced path; false when it
-//! leaves the tolerance (target fraction) or nearly stops moving along its parameter.
-//! The curve goes to `curve` and its measured deviation to `deviation_mm` (also on failure).
-bool build(const Transition& t, const PathPoint& a, const PathPoint& b, double tolerance_mm, PathSegment& curve,
-           double& deviation_mm, bool chained = false) {
+//! The parameter length of the curve between the states: the mean of its chord and the trims,
+//! or, `chained` between two lines, the arc length of the circle with the end directions.
+double curve_length(const Transition& t, const PathPoint& a, const PathPoint& b, bool chained) {
     const double chord = distance3(a.position, b.position);
     double length = 0.5 * (chord + t.trim_before + t.trim_after);
     if (chained && t.replaced_before.shape == SegmentShape::line && t.replaced_after.shape == SegmentShape::line) {
@@ -260,8 +188,17 @@ bool build(const Transition& t, const PathPoint& a, const PathPoint& b, double t
             length = half_turn > 1e-12 ? chord * half_turn / std::sin(half_turn) : chord;
         }
     }
-    curve = make_quintic(a, b, length, AxisVector{});
-    const double bound = hull_verdict(curve, t, a.position, b.position);
+    return length;
+}
+
+//! Builds the curve of parameter length `length` between the states and measures it against the
+//! replaced path; false when it leaves the tolerance (target fraction) or nearly stops moving
+//! along its parameter. The curve goes to `curve` and its measured deviation to `deviation_mm`
+//! (also on failure).
+bool build_of_length(const Transition& t, const PathPoint& a, const PathPoint& b, double length, double tolerance_mm,
+                     PathSegment& curve, double& deviation_mm) {
+    write_quintic(curve, a, b, length, AxisVector{});
+    const double bound = hull_verdict(curve, t, a.position, b.position, min_parametric_speed);
     if (bound >= 0 && bound <= deviation_target * tolerance_mm) {
         deviation_mm = bound;
         return true;
@@ -269,6 +206,12 @@ bool build(const Transition& t, const PathPoint& a, const PathPoint& b, double t
     const CurveDeviation measured = measure_deviation(curve, t, tolerance_mm);
     deviation_mm = measured.deviation_mm;
     return measured.deviation_mm <= deviation_target * tolerance_mm && measured.slowest >= min_parametric_speed;
+}
+
+//! build_of_length with the curve_length.
+bool build(const Transition& t, const PathPoint& a, const PathPoint& b, double tolerance_mm, PathSegment& curve,
+           double& deviation_mm, bool chained = false) {
+    return build_of_length(t, a, b, curve_length(t, a, b, chained), tolerance_mm, curve, deviation_mm);
 }
 
 }  // namespace
@@ -302,29 +245,37 @@ bool single_quintic(const PathSegment& before, double before_room, const PathSeg
         if (!(trim_a > min_trim_mm && trim_b > min_trim_mm)) return false;
         out.trim_before = trim_a;
         out.trim_after = trim_b;
-        out.replaced_before = trim_start(before, before.length - trim_a);
+        trim_start_into(out.replaced_before, before, before.length - trim_a);
         out.replaced_after = after;
         out.replaced_after.length = trim_b;
-        out.start = point_at(before, before.length - trim_a);
-        out.end = point_at(after, trim_b);
+        point_into(out.start, before, before.length - trim_a);
+        point_into(out.end, after, trim_b);
         out.chained = false;
         if (chain != nullptr && trim_a == before.length) {
             // `before` is eaten: start with the curvature of the turn between the outer ends of
             // the two transitions that meet on it (see ChainStart).
+            // The start moves onto the curve the chain samples (chain_state.hpp), with its
+            // direction and curvature; it is set in place, and put back when the curve fails.
             const double length = 0.5 * (distance3(out.start.position, out.end.position) + trim_a + trim_b);
-            PathPoint a = out.start;
-            const ChainMidState mid =
-                chain_mid_state(chain->entry_start_d1, chain->entry_length, {a.d1[0], a.d1[1], a.d1[2]}, 2 * trim_a,
-                                {out.end.d1[0], out.end.d1[1], out.end.d1[2]}, length);
+            const std::array<double, 3> own_position{out.start.position[0], out.start.position[1],
+                                                     out.start.position[2]};
+            const std::array<double, 3> own_d1{out.start.d1[0], out.start.d1[1], out.start.d1[2]};
+            const std::array<double, 3> own_d2{out.start.d2[0], out.start.d2[1], out.start.d2[2]};
+            const ChainMidState mid = chain_mid_state(chain->entry_start_d1, chain->entry_length, own_d1, 2 * trim_a,
+                                                      {out.end.d1[0], out.end.d1[1], out.end.d1[2]}, length);
             for (std::size_t i = 0; i < 3; ++i) {
-                a.position[i] += mid.offset[i];
-                a.d1[i] = mid.d1[i];
-                a.d2[i] = mid.d2[i];
+                out.start.position[i] += mid.offset[i];
+                out.start.d1[i] = mid.d1[i];
+                out.start.d2[i] = mid.d2[i];
             }
-            if (build(out, a, out.end, tolerance_mm, out.curve, out.deviation_mm, true)) {
-                out.start = a;
+            if (build(out, out.start, out.end, tolerance_mm, out.curve, out.deviation_mm, true)) {
                 out.chained = true;
                 return true;
+            }
+            for (std::size_t i = 0; i < 3; ++i) {
+                out.start.position[i] = own_position[i];
+                out.start.d1[i] = own_d1[i];
+                out.start.d2[i] = own_d2[i];
             }
         }
         if (build(out, out.start, out.end, tolerance_mm, out.curve, out.deviation_mm)) return true;
@@ -352,6 +303,46 @@ bool make_transition(const PathSegment& before, double before_room, const PathSe
     if (quintic && !(turning_speed(ramp, *turning) > ramp_speed_margin * turning_speed(out, *turning))) return true;
     out = std::move(ramp);
     return true;
+}
+
+bool rebuild_with_end_state(Transition& transition, const std::array<double, 3>& end_position,
+                            const std::array<double, 3>& end_d1, const std::array<double, 3>& end_d2,
+                            double tolerance_mm) {
+    // Built in place. Failing, the end state is put back and the curve with it: a chained curve
+    // is the quintic between its states with its own length (single_quintic), so building it
+    // again gives the same numbers; any other curve is kept as a copy.
+    PathPoint& end = transition.end;
+    const std::array<double, 3> old_position{end.position[0], end.position[1], end.position[2]};
+    const std::array<double, 3> old_d1{end.d1[0], end.d1[1], end.d1[2]};
+    const std::array<double, 3> old_d2{end.d2[0], end.d2[1], end.d2[2]};
+    const double old_length = transition.curve.length;
+    std::optional<PathSegment> kept;
+    if (!transition.chained) kept = transition.curve;
+    // A chained transition that keeps its end point and direction keeps the length curve_length
+    // gave it (which needs no trigonometry again).
+    const bool same_length = transition.chained && end_position == old_position && end_d1 == old_d1;
+    auto set_end = [&](const std::array<double, 3>& position, const std::array<double, 3>& d1,
+                       const std::array<double, 3>& d2) {
+        for (std::size_t i = 0; i < 3; ++i) {
+            end.position[i] = position[i];
+            end.d1[i] = d1[i];
+            end.d2[i] = d2[i];
+        }
+    };
+    set_end(end_position, end_d1, end_d2);
+    const double length = same_length ? old_length : curve_length(transition, transition.start, end, true);
+    double deviation_mm = 0;
+    if (build_of_length(transition, transition.start, end, length, tolerance_mm, transition.curve, deviation_mm)) {
+        transition.deviation_mm = deviation_mm;
+        return true;
+    }
+    set_end(old_position, old_d1, old_d2);
+    if (kept) {
+        transition.curve = *kept;
+    } else {
+        write_quintic(transition.curve, transition.start, end, old_length, AxisVector{});
+    }
+    return false;
 }
 
 std::optional<Rebuilt> with_end_states(const Transition& transition, const std::array<double, 3>& start_d1,

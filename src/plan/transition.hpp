@@ -12,6 +12,10 @@
 
 namespace nckit::plan_detail {
 
+//! trim_start(g, trim) written to `out` (which may be g): a line is copied at most once (the value
+//! trim_start returns would be copied again).
+void trim_start_into(PathSegment& out, const PathSegment& g, double trim);
+
 //! The join passes at speed without a transition: directions (dq/ds, every axis) equal within
 //! direction_tolerance, and, when `curvature_too`, curvature vectors (d²q/ds²) within
 //! curvature_tolerance (1/mm).
@@ -37,13 +41,20 @@ struct Transition {
     bool chained = false;           //!< starts with a ChainStart's curvature (make_transition)
 };
 
-//! The same transition with the direction and curvature vectors (dq/ds and d²q/ds² on XYZ) at
-//! its ends replaced, when it still keeps within tolerance_mm. A chain of transitions that eats
-//! whole short lines (a CAM polyline) meets at the lines' middles; there the two transitions may
-//! agree on any state. With the direction of the chord through the neighbouring joins and the
-//! curvature of the turn between them (instead of the line's own direction and 0), the chain
-//! follows the curve the polyline samples, and its speed is set by that curve's radius rather
-//! than by a curvature pulse at every vertex and the rounding noise of the written decimals.
+//! Rebuilds the transition to end at `end_position` with the given direction and curvature
+//! vectors (XYZ; dq/ds and d²q/ds²), when it still keeps within tolerance_mm; false leaves it as
+//! it was. A chain of transitions that eats whole short lines (a CAM polyline) meets at the
+//! lines' middles; there the two transitions may agree on any state. With the direction of the
+//! chord through the neighbouring joins and the curvature of the turn between them (instead of
+//! the line's own direction and 0), the chain follows the curve the polyline samples, and its
+//! speed is set by that curve's radius rather than by a curvature pulse at every vertex and the
+//! rounding noise of the written decimals. The start state stays.
+[[nodiscard]] bool rebuild_with_end_state(Transition& transition, const std::array<double, 3>& end_position,
+                                          const std::array<double, 3>& end_d1, const std::array<double, 3>& end_d2,
+                                          double tolerance_mm);
+//! The same transition with the direction and curvature vectors at both ends replaced (its end
+//! points stay), when it still keeps within tolerance_mm: for a chain that starts from rest or
+//! ends at a stop (pending_motion.cpp), where the start state changes too.
 struct Rebuilt {
     PathSegment curve;
     PathPoint start;
@@ -82,7 +93,7 @@ struct TurningLimits {
 //! The transition is written to `out` (which it leaves undefined when there is none). With
 //! `chain`, when `before` is eaten whole, the curve first tries to start with the chain's
 //! curvature (out.chained tells whether it does; the transition into before must then be rebuilt
-//! to end in out.start's state, with_end_states). With `turning` (jerk-limited plans), a tangent
+//! to end in out.start's state, rebuild_with_end_state). With `turning` (jerk-limited plans), a tangent
 //! join of an arc whose curvature jumps also gets a ramp transition (ramp_transition.hpp), kept
 //! when its curves allow a higher speed (turning_speed) than the single quintic's.
 [[nodiscard]] bool make_transition(const PathSegment& before, double before_room, const PathSegment& after,

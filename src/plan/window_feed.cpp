@@ -8,23 +8,22 @@
 
 namespace nckit::plan_detail {
 
-void WindowFeed::add_segment(PathSegment path, const ProfileLimits& limits, double junction_max,
+void WindowFeed::add_segment(const PathSegment& path, const ProfileLimits& limits, double junction_max,
                              const SegmentOrigin& origin, bool blend, std::vector<WindowEvent> after,
                              bool continues_move, const PieceCheck& check) {
     position = end_point(path);
     at_rest_ = !(junction_max > 0);
-    WindowSegment s;
-    s.path = std::move(path);
-    s.limits = limits;
-    s.junction_max = junction_max;
-    s.where = origin.where;
-    s.sequence_number = origin.sequence_number;
-    s.spindle_locked = origin.spindle_locked;
-    s.blend = blend;
-    s.continues_move = continues_move;
-    s.check = check;
-    s.after = std::move(after);
-    lookahead_.add(std::move(s));
+    // Every field named: the path is copied once, into the segment, not zeroed first.
+    lookahead_.add(WindowSegment{.path = path,
+                                 .limits = limits,
+                                 .junction_max = junction_max,
+                                 .where = origin.where,
+                                 .sequence_number = origin.sequence_number,
+                                 .blend = blend,
+                                 .continues_move = continues_move,
+                                 .spindle_locked = origin.spindle_locked,
+                                 .after = std::move(after),
+                                 .check = check});
 }
 
 bool WindowFeed::add_curve_pieces(PathSegment& curve, int pieces, double feed_mm_s, const SegmentOrigin& origin,

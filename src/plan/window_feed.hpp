@@ -31,9 +31,9 @@ public:
         : machine_(machine), kind_(kind), lookahead_(lookahead) {}
 
     //! One segment as it is; junction_max 0 ends it at rest.
-    void add_segment(PathSegment path, const ProfileLimits& limits, double junction_max, const SegmentOrigin& origin,
-                     bool blend, std::vector<WindowEvent> after, bool continues_move = false,
-                     const PieceCheck& check = {});
+    void add_segment(const PathSegment& path, const ProfileLimits& limits, double junction_max,
+                     const SegmentOrigin& origin, bool blend, std::vector<WindowEvent> after,
+                     bool continues_move = false, const PieceCheck& check = {});
 
     //! A transition between two motions (a blend, fed at feed_mm_s): under a jerk limit one that
     //! joins an arc goes in pieces whose speed follows its curvature; others whole.
