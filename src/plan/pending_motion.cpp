@@ -103,7 +103,9 @@ bool join_by_transition(PendingMotion& p, PendingMotion& next, double tolerance,
 }
 
 bool end_at_rest(PendingMotion& p) {
-    if (!p.entry || !p.entry->more.empty() || p.path.shape != SegmentShape::line ||
+    // Only the last line of a CAM chain (its entry chained): a short line after a single corner
+    // keeps its own piece, at the programmed point where the program stops.
+    if (!p.entry || !p.entry->chained || !p.entry->more.empty() || p.path.shape != SegmentShape::line ||
         p.entry->replaced_after.shape != SegmentShape::line || p.entry->replaced_before.shape != SegmentShape::line ||
         !(p.path.length > 0) || p.full_length > p.entry->curve.length + p.entry->trim_after) {
         return false;

@@ -67,8 +67,9 @@ struct PendingMotion {
 [[nodiscard]] bool join_by_transition(PendingMotion& p, PendingMotion& next, double tolerance,
                                       const TurningLimits* turning = nullptr, bool starts_at_rest = false);
 
-//! Before a stop, the rest of a line p that its entry transition (from a line) trimmed is taken
-//! into that transition, which then ends at p's end with the curvature it started with: at rest
+//! Before a stop, the rest of a line p that its chained entry transition trimmed (p is the last
+//! line of a CAM chain, the line before it eaten) is taken into that transition, which then ends
+//! at p's end with the curvature it started with: at rest
 //! the curvature is free, so a chain of CAM lines ending there does not ramp its curvature down
 //! to zero at the last line's middle. Within the tolerance the transition was built with; false,
 //! with p untouched, when that keeps no tolerance.
