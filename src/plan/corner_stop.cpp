@@ -63,4 +63,25 @@ bool stop_is_faster(const Transition& transition, const PathSegment& before, con
     return crossing_s > cost_s;
 }
 
+bool unjoin_for_a_stop(PendingMotion& p, PendingMotion& next, const TurningLimits& limits) {
+    if (!next.entry) return false;
+    const Transition& t = *next.entry;
+    if (t.chained || !(p.path.length > 0) || p.path.shape != SegmentShape::line ||
+        next.path.shape != SegmentShape::line) {
+        return false;
+    }
+    // The lines as they were before the transition's trims (replaced_after is the whole of
+    // next's path, cut to the trim's length).
+    PathSegment after = t.replaced_after;
+    after.length = next.path.length + t.trim_after;
+    p.path.length += t.trim_before;
+    if (stop_is_faster(t, p.path, after, next.entry_feed_mm_s, limits)) {
+        next.path = after;
+        next.entry.reset();
+        return true;
+    }
+    p.path.length -= t.trim_before;
+    return false;
+}
+
 }  // namespace nckit::plan_detail

@@ -3,6 +3,7 @@
 // it than through its transition. Within a tight G64 P a sharp corner's quintic is tiny and so
 // tightly curved that its speed limit is a few mm/s: crossing it takes longer than the speed
 // it keeps saves on either side (docs/planner.md, "Sharp corners: stop or pass").
+#include "pending_motion.hpp"
 #include "transition.hpp"
 
 namespace nckit::plan_detail {
@@ -14,5 +15,10 @@ namespace nckit::plan_detail {
 //! transition's length at its speed against the lines' corner at theirs.
 [[nodiscard]] bool stop_is_faster(const Transition& transition, const PathSegment& before, const PathSegment& after,
                                   double feed_mm_s, const TurningLimits& limits);
+
+//! After join_by_transition joined the lines p and next by a plain corner transition (not a
+//! chained one, p not eaten): when stopping at the corner is faster, undoes the join (both lines
+//! as programmed, next without its entry) and returns true; otherwise leaves both as joined.
+[[nodiscard]] bool unjoin_for_a_stop(PendingMotion& p, PendingMotion& next, const TurningLimits& limits);
 
 }  // namespace nckit::plan_detail

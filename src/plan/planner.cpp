@@ -3,11 +3,11 @@
 
 #include <array>
 #include <cmath>
-
-#include <fmt/format.h>
 #include <limits>
 #include <stdexcept>
 #include <utility>
+
+#include <fmt/format.h>
 
 #include "chain_smoother.hpp"
 #include "corner_stop.hpp"
@@ -135,27 +135,12 @@ struct Planner::Impl {
     }
 
     //! Any other corner, and every join with a jump in curvature under a jerk limit: a quintic
-    //! transition within the tolerance (pending_motion.hpp).
-    //! Under a jerk limit a sharp corner between lines may be faster stopped at (corner_stop.hpp).
+    //! transition within the tolerance (pending_motion.hpp), or a stop where faster (corner_stop.hpp).
     bool transition(Pending& p, Pending& next, double tolerance) {
         const plan_detail::TurningLimits* limits = kind == ProfileKind::scurve ? &turning : nullptr;
         const bool from_rest = window_feed.at_rest() && !p.entry;  // p follows a stop
         if (!plan_detail::join_by_transition(p, next, tolerance, limits, from_rest)) return false;
-        const plan_detail::Transition& t = *next.entry;
-        if (limits != nullptr && options.stop_sharp_corners && !t.chained && p.path.length > 0 &&
-            p.path.shape == SegmentShape::line && next.path.shape == SegmentShape::line) {
-            // The lines as they were before the transition's trims (replaced_after is the whole
-            // of next's path, cut to the trim's length).
-            PathSegment after = t.replaced_after;
-            after.length = next.path.length + t.trim_after;
-            p.path.length += t.trim_before;
-            if (plan_detail::stop_is_faster(t, p.path, after, next.entry_feed_mm_s, *limits)) {
-                next.path = after;
-                next.entry.reset();
-                return false;
-            }
-            p.path.length -= t.trim_before;
-        }
+        if (limits && options.stop_sharp_corners && plan_detail::unjoin_for_a_stop(p, next, *limits)) return false;
         release_pending(false);
         return true;
     }
