@@ -39,7 +39,13 @@ std::optional<ToolEntry> read_tool(const toml::table& table, ConfigSink& sink) {
     const std::size_t errors_before = sink.diagnostics.size();
     TableReader reader(table, "[[tool]]", sink);
     ToolEntry tool;
-    if (auto number = reader.integer("number", Need::required, Sign::positive)) tool.number = *number;
+    if (auto number = reader.integer("number", Need::required, Sign::positive)) {
+        if (*number > max_tool_number) {
+            sink.error(reader.region_of("number"), "config-value",
+                       fmt::format("'number' is a tool number 1 to {}, not {}", max_tool_number, *number));
+        }
+        tool.number = *number;
+    }
     if (auto pocket = reader.integer("pocket", Need::optional, Sign::non_negative)) tool.pocket = *pocket;
     reader.number_into("length_mm", Need::optional, Sign::any, tool.length_mm);
     reader.number_into("length_wear_mm", Need::optional, Sign::any, tool.length_wear_mm);

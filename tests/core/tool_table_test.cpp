@@ -66,6 +66,9 @@ TEST(ToolTableToml, ErrorsCarryLineAndColumn) {
               "t.toml:4:15: error: give 'radius_mm' or 'diameter_mm', not both");
     EXPECT_EQ(error("[[tool]]\nnumber = 1\norientation = 12\n"),
               "t.toml:3:15: error: 'orientation' is a tip orientation 0 to 9, not 12");
+    // A number a T word cannot select (a fuzzer found 299999999 accepted).
+    EXPECT_EQ(error("[[tool]]\nnumber = 299999999\n"),
+              "t.toml:2:10: error: 'number' is a tool number 1 to 99999999, not 299999999");
     EXPECT_NE(error("[[tool]]\nlength_mm = 3\n").find("t.toml:1:1: error:"), std::string::npos);
     EXPECT_NE(error("[[tool]]\nnumber = 1\ndiameter_mm = -2\n").find("t.toml:3:15: error:"), std::string::npos);
     // Values a tool cannot have (a fuzzer found 1e308 + 1e308 wear overflowing to infinity).
