@@ -103,6 +103,25 @@ class DisplaySession:
             self.samples_out.close()
 
 
+def run_failed(session, result, ex):
+    """An exception ended the run: its message goes into the result, and whatever the machine
+    is doing is aborted (if LinuxCNC can still be reached)."""
+    result["errors"].append(f"{type(ex).__name__}: {ex}")
+    try:
+        session.c.abort()
+    except Exception:
+        pass
+
+
+def finish_run(session, result, work):
+    """Stops the sampler and leaves the result in display_result.json beside the INI, where the
+    parent reads it."""
+    if session is not None:
+        session.stop_sampling()
+    with open(os.path.join(work, "display_result.json"), "w") as f:
+        json.dump(result, f)
+
+
 def display_main(argv):
     """LinuxCNC runs `DISPLAY -ini FILE`; the run's settings are in run.json beside FILE."""
     ini = argv[argv.index("-ini") + 1]
@@ -133,15 +152,8 @@ def display_main(argv):
         result["ok"] = True
         result["phase"] = "done"
     except Exception as ex:  # reported to the parent through display_result.json
-        result["errors"].append(f"{type(ex).__name__}: {ex}")
-        try:
-            session.c.abort()
-        except Exception:
-            pass
+        run_failed(session, result, ex)
     finally:
-        if session is not None:
-            session.stop_sampling()
-        with open(os.path.join(work, "display_result.json"), "w") as f:
-            json.dump(result, f)
+        finish_run(session, result, work)
     # Exiting the display makes the linuxcnc script shut everything down.
     return 0

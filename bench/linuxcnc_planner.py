@@ -40,8 +40,9 @@ import subprocess
 import sys
 import tempfile
 
-# Other scripts use DisplaySession, stop_linuxcnc and force_unload as linuxcnc_planner.NAME.
-from linuxcnc_display import DisplaySession, display_main  # noqa: F401
+# Other scripts use DisplaySession, finish_run, run_failed, stop_linuxcnc and force_unload as
+# linuxcnc_planner.NAME.
+from linuxcnc_display import DisplaySession, display_main, finish_run, run_failed  # noqa: F401
 from linuxcnc_process import LOCKFILE, force_unload, stop_linuxcnc, wait_for_no_lock  # noqa: F401
 
 SERVO_PERIOD_S = 0.001

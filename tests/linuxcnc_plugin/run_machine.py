@@ -175,10 +175,7 @@ def display_main(argv):
         except Exception:
             pass
     finally:
-        if session is not None:
-            session.stop_sampling()
-        with open(os.path.join(work, "display_result.json"), "w") as f:
-            json.dump(result, f)
+        lp.finish_run(session, result, work)
     return 0
 
 

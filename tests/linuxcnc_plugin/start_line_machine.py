@@ -93,16 +93,9 @@ def display_main(argv):
         result["finished"] = True
         result["phase"] = "done"
     except Exception as ex:
-        result["errors"].append(f"{type(ex).__name__}: {ex}")
-        try:
-            session.c.abort()
-        except Exception:
-            pass
+        rm.lp.run_failed(session, result, ex)
     finally:
-        if session is not None:
-            session.stop_sampling()
-        with open(os.path.join(work, "display_result.json"), "w") as f:
-            json.dump(result, f)
+        rm.lp.finish_run(session, result, work)
     return 0
 
 
