@@ -6,6 +6,7 @@
 
 #include "nckit/plan/profile.hpp"
 #include "ramp_transition.hpp"
+#include "rates.hpp"
 
 namespace nckit::plan_detail {
 namespace {
@@ -22,19 +23,11 @@ ProfileLimits line_limits(const PathSegment& line, double feed_mm_s, const Turni
     return out;
 }
 
-//! s, a symmetric jerk-limited speed change by dv_mm_s (the acceleration limit reached or not).
-double change_time_s(double dv_mm_s, const ProfileLimits& limits) {
-    if (!(dv_mm_s > 0)) return 0;
-    const double a = limits.max_acceleration;
-    const double j = limits.max_jerk;
-    return dv_mm_s <= a * a / j ? 2.0 * std::sqrt(dv_mm_s / j) : dv_mm_s / a + a / j;
-}
-
 //! s, what changing between v and cruise costs against cruising the same distance: its time
 //! less the distance it covers (at the mean of its end speeds) over cruise.
-double change_cost_s(double v_mm_s, double cruise_mm_s, const ProfileLimits& limits) {
+double change_cost_s(double v_mm_s, double cruise_mm_s, const Rates& rates) {
     if (!(cruise_mm_s > v_mm_s)) return 0;
-    const double t = change_time_s(cruise_mm_s - v_mm_s, limits);
+    const double t = change_time(cruise_mm_s - v_mm_s, rates);
     return t * (cruise_mm_s - v_mm_s) / (2.0 * cruise_mm_s);
 }
 
@@ -55,7 +48,8 @@ bool stop_is_faster(const Transition& transition, const PathSegment& before, con
         // a corner as well).
         const double cruise = max_end_speed(0.5 * line->length, 0.0, path, ProfileKind::scurve);
         slowest_cruise = std::min(slowest_cruise, cruise);
-        cost_s += change_cost_s(0.0, cruise, path) - change_cost_s(corner_mm_s, cruise, path);
+        const Rates rates = make_rates(path, ProfileKind::scurve);
+        cost_s += change_cost_s(0.0, cruise, rates) - change_cost_s(corner_mm_s, cruise, rates);
     }
     if (!(slowest_cruise > corner_mm_s)) return false;
     const double crossing_s =
@@ -74,13 +68,14 @@ bool unjoin_for_a_stop(PendingMotion& p, PendingMotion& next, const TurningLimit
     // next's path, cut to the trim's length).
     PathSegment after = t.replaced_after;
     after.length = next.path.length + t.trim_after;
+    const double trimmed_mm = p.path.length;
     p.path.length += t.trim_before;
     if (stop_is_faster(t, p.path, after, next.entry_feed_mm_s, limits)) {
         next.path = after;
         next.entry.reset();
         return true;
     }
-    p.path.length -= t.trim_before;
+    p.path.length = trimmed_mm;  // exactly as joined
     return false;
 }
 
