@@ -87,4 +87,30 @@ inline constexpr double chain_state_max_correction = 1e-3;
     return s;
 }
 
+//! A unit direction and the curvature vector normal to it.
+struct DirectionState {
+    std::array<double, 3> d1{};
+    std::array<double, 3> d2{};
+};
+
+//! The state ds along from direction `d1` on a curve of curvature vector `curvature`: the
+//! direction turned on by ds·curvature (made unit), and the curvature without its part along
+//! it. A chain's first and last lines end at rest in this state (pending_motion.cpp).
+[[nodiscard]] inline DirectionState turned_state(const std::array<double, 3>& d1,
+                                                 const std::array<double, 3>& curvature, double ds) {
+    DirectionState s;
+    double norm2 = 0;
+    for (std::size_t i = 0; i < 3; ++i) {
+        s.d1[i] = d1[i] + ds * curvature[i];
+        norm2 += s.d1[i] * s.d1[i];
+    }
+    double along = 0;
+    for (std::size_t i = 0; i < 3; ++i) {
+        s.d1[i] /= std::sqrt(norm2);
+        along += curvature[i] * s.d1[i];
+    }
+    for (std::size_t i = 0; i < 3; ++i) s.d2[i] = curvature[i] - along * s.d1[i];
+    return s;
+}
+
 }  // namespace nckit::plan_detail

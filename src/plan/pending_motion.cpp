@@ -4,6 +4,8 @@
 #include <array>
 #include <cmath>
 
+#include "chain_state.hpp"
+
 namespace nckit::plan_detail {
 
 namespace {
@@ -21,27 +23,18 @@ bool start_from_rest(const PendingMotion& p, const PendingMotion& next, double t
     // half of p's share of that turn.
     const double h = t.trim_before;
     const double spacing = t.curve.length - 0.5 * h;
-    std::array<double, 3> d1{};
     std::array<double, 3> turn{};
-    double norm2 = 0;
-    for (std::size_t i = 0; i < 3; ++i) {
-        turn[i] = (t.end.d1[i] - t.start.d1[i]) / spacing;
-        d1[i] = t.start.d1[i] - 0.5 * h * turn[i];
-        norm2 += d1[i] * d1[i];
-    }
-    double along = 0;
-    for (std::size_t i = 0; i < 3; ++i) {
-        d1[i] /= std::sqrt(norm2);
-        along += turn[i] * d1[i];
-    }
-    for (std::size_t i = 0; i < 3; ++i) turn[i] -= along * d1[i];
+    for (std::size_t i = 0; i < 3; ++i) turn[i] = (t.end.d1[i] - t.start.d1[i]) / spacing;
+    std::array<double, 3> start_d1{};
+    for (std::size_t i = 0; i < 3; ++i) start_d1[i] = t.start.d1[i];
+    const DirectionState start = turned_state(start_d1, turn, -0.5 * h);
     std::array<double, 3> end_d1{};
     std::array<double, 3> end_d2{};
     for (std::size_t i = 0; i < 3; ++i) {
         end_d1[i] = t.end.d1[i];
         end_d2[i] = t.end.d2[i];
     }
-    if (const auto curved = with_end_states(t, d1, turn, end_d1, end_d2, tolerance)) apply(t, *curved);
+    if (const auto curved = with_end_states(t, start.d1, start.d2, end_d1, end_d2, tolerance)) apply(t, *curved);
     return true;
 }
 
@@ -116,25 +109,17 @@ bool end_at_rest(PendingMotion& p) {
     const double h = p.full_length;
     std::array<double, 3> start_d1{};
     std::array<double, 3> start_d2{};
-    std::array<double, 3> d1{};
-    std::array<double, 3> d2{};
-    double norm2 = 0;
+    std::array<double, 3> rate{};
     for (std::size_t i = 0; i < 3; ++i) {
         start_d1[i] = t.start.d1[i];
         start_d2[i] = t.start.d2[i];
-        d1[i] = p.path.rate[i] + 0.5 * h * start_d2[i];
-        norm2 += d1[i] * d1[i];
+        rate[i] = p.path.rate[i];
     }
-    double along = 0;
-    for (std::size_t i = 0; i < 3; ++i) {
-        d1[i] /= std::sqrt(norm2);
-        along += start_d2[i] * d1[i];
-    }
-    for (std::size_t i = 0; i < 3; ++i) d2[i] = start_d2[i] - along * d1[i];
+    const DirectionState end = turned_state(rate, start_d2, 0.5 * h);
     t.trim_after += p.path.length;
     t.replaced_after.length = t.trim_after;
     t.end.position = end_point(p.path);
-    const auto rebuilt = with_end_states(t, start_d1, start_d2, d1, d2, p.entry_tolerance_mm);
+    const auto rebuilt = with_end_states(t, start_d1, start_d2, end.d1, end.d2, p.entry_tolerance_mm);
     if (!rebuilt) return false;
     apply(t, *rebuilt);
     *p.entry = std::move(t);

@@ -37,7 +37,7 @@ struct MergeRates {
 //! The fastest profile over `distance` from v_start to v_end (both kept exactly) among S-curves
 //! with an acceleration and jerk between rates.tightest's and rates.widest's and a top speed up
 //! to rates.widest.max_velocity that profile_keeps_pieces accepts on `spans`; false when none
-//! is. The search is bounded: four rate levels, seven top speeds each.
+//! is. The search is bounded: six rate levels, seven top speeds each.
 [[nodiscard]] bool merged_profile(double distance, double v_start, double v_end, const MergeRates& rates,
                                   const std::vector<CheckedSpan>& spans, Profile& out);
 
