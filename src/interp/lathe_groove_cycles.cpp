@@ -7,11 +7,11 @@
 // (never past the end point) for the next column. R in the second block (the 0i's Δd, the travel
 // of the tool at the bottom of the cut) moves the tool back along the step axis, against the step
 // direction, at the bottom of every column but the first before it returns: into the column cut
-// before, where the material is gone, so the tool's side leaves the groove wall it was cutting. P and Q without
-// a decimal point count least increments (P2000 = 2 mm); X is a diameter on a diameter lathe, P
-// and R radii. The one-block form
-// of older controls (`G75 X Z I(peck in X) K(step in Z) F`, G74 with K the peck in Z and I the
-// step in X) takes the back-off from the last `G74/G75 R` block, none if there was none.
+// before, where the material is gone, so the tool's side leaves the groove wall it was cutting.
+// P and Q without a decimal point count least increments (P2000 = 2 mm); X is a diameter on a
+// diameter lathe, P and R radii. The one-block form of older controls (`G75 X Z I(peck in X)
+// K(step in Z) F`, G74 with K the peck in Z and I the step in X) takes the back-off from the last
+// `G74/G75 R` block, none if there was none.
 #include <cmath>
 
 #include <fmt/format.h>
