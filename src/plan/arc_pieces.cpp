@@ -144,9 +144,40 @@ double jerk_limited_speed(const DerivativeBounds& b, const MachineConfig& machin
     return std::isfinite(v) ? v : 0.0;
 }
 
+//! Samples per piece for the signed ranges of its derivatives.
+constexpr int sign_samples = 9;
+
+//! The signed ranges of q', q'', q''' of axis i over `path`: the samples' extremes, widened by
+//! the largest step between neighbouring samples (a value between two samples lies within half
+//! a step of one of them while the derivative is monotone there, and a piece is short: 1.4° of
+//! an arc, 1/32 of a transition), clamped into the bounds ±d1, ±d2, ±d3.
+void set_signed_ranges(const std::array<PathPoint, sign_samples>& points, std::size_t i, CurvedAxis& c) {
+    const auto range = [&](auto value, double bound) {
+        double lo = value(points[0]);
+        double hi = lo;
+        double step = 0;
+        for (int k = 1; k < sign_samples; ++k) {
+            const double x = value(points[static_cast<std::size_t>(k)]);
+            step = std::max(step, std::abs(x - value(points[static_cast<std::size_t>(k - 1)])));
+            lo = std::min(lo, x);
+            hi = std::max(hi, x);
+        }
+        return SignedRange{std::max(-bound, lo - step), std::min(bound, hi + step)};
+    };
+    c.q1 = range([i](const PathPoint& p) { return p.d1[i]; }, c.d1);
+    c.q2 = range([i](const PathPoint& p) { return p.d2[i]; }, c.d2);
+    c.q3 = range([i](const PathPoint& p) { return p.d3[i]; }, c.d3);
+    c.signs_known = true;
+}
+
 //! A jerk-limited piece's curved axes and its speed with no path acceleration or jerk; no check
 //! (cruise_velocity 0) when more than three axes curve.
-PieceCheck piece_check(const DerivativeBounds& b, const MachineConfig& machine, double feed_mm_s) {
+PieceCheck piece_check(const PathSegment& path, const DerivativeBounds& b, const MachineConfig& machine,
+                       double feed_mm_s) {
+    std::array<PathPoint, sign_samples> points;
+    for (int k = 0; k < sign_samples; ++k) {
+        points[static_cast<std::size_t>(k)] = point_at(path, path.length * k / (sign_samples - 1));
+    }
     PieceCheck check;
     double v = feed_mm_s / b.speed_factor;
     for (const AxisConfig& axis : machine.axes) {
@@ -160,8 +191,9 @@ PieceCheck piece_check(const DerivativeBounds& b, const MachineConfig& machine, 
             continue;
         }
         if (check.count == static_cast<int>(check.axes.size())) return PieceCheck{};
-        check.axes[static_cast<std::size_t>(check.count++)] = {b.d1[i], b.d2[i], b.d3[i], axis.max_acceleration,
-                                                               axis.max_jerk};
+        CurvedAxis& curved = check.axes[static_cast<std::size_t>(check.count++)];
+        curved = {b.d1[i], b.d2[i], b.d3[i], axis.max_acceleration, axis.max_jerk};
+        set_signed_ranges(points, i, curved);
         if (b.d2[i] > 0) v = std::min(v, std::sqrt(axis.max_acceleration / b.d2[i]));
         if (b.d3[i] > 0) v = std::min(v, std::cbrt(axis.max_jerk / b.d3[i]));
     }
@@ -276,7 +308,7 @@ bool split_jerk_limited(const PathSegment& segment, int n, const MachineConfig& 
         piece.limits.max_velocity = jerk_limited_speed(b, machine, feed_mm_s, a, j);
         piece.limits.max_acceleration = a;
         piece.limits.max_jerk = j;
-        piece.check = piece_check(b, machine, feed_mm_s);
+        piece.check = piece_check(piece.path, b, machine, feed_mm_s);
         piece.check.limits_need_knee = true;  // jerk_limited_speed counts the knee
         fastest = std::max(fastest, piece.limits.max_velocity);
     }

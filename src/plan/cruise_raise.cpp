@@ -21,17 +21,48 @@ Motion advance(double v, double a, double j, double x) {
     return {v + x * (a + 0.5 * x * j), a + x * j};
 }
 
-bool part_fits(const CheckedSpan& span, double v, double a, double j) {
+SignedRange product(SignedRange x, SignedRange y) {
+    const double p[4] = {x.lo * y.lo, x.lo * y.hi, x.hi * y.lo, x.hi * y.hi};
+    return {std::min({p[0], p[1], p[2], p[3]}), std::max({p[0], p[1], p[2], p[3]})};
+}
+SignedRange sum(SignedRange x, SignedRange y) {
+    return {x.lo + y.lo, x.hi + y.hi};
+}
+double magnitude(SignedRange x) {
+    return std::max(std::abs(x.lo), std::abs(x.hi));
+}
+
+//! Whether an axis keeps its limits for every speed in `v`, path acceleration in `a` and the
+//! path jerk j: q''·ṡ² + q'·s̈ and q'''·ṡ³ + 3·q''·ṡ·s̈ + q'·s⃛ over their ranges.
+bool axis_fits(const CurvedAxis& axis, SignedRange v, SignedRange a, double j) {
+    CurvedAxis c = axis;
+    if (!c.signs_known) {
+        c.q1 = {-c.d1, c.d1};
+        c.q2 = {-c.d2, c.d2};
+        c.q3 = {-c.d3, c.d3};
+    }
+    const SignedRange v2{v.lo * v.lo, v.hi * v.hi};
+    const SignedRange v3{v2.lo * v.lo, v2.hi * v.hi};
+    if (magnitude(sum(product(c.q2, v2), product(c.q1, a))) > c.max_acceleration) return false;
+    const SignedRange turning = product(c.q3, v3);
+    const SignedRange coupling = product({3.0 * c.q2.lo, 3.0 * c.q2.hi}, product(v, a));
+    const SignedRange path = product(c.q1, {j, j});
+    return magnitude(sum(sum(turning, coupling), path)) <= c.max_jerk;
+}
+
+//! v: the speeds (>= 0) of the part, a: its path accelerations, j its jerk.
+bool part_fits(const CheckedSpan& span, SignedRange v, SignedRange a, double j) {
+    const double a_top = magnitude(a);
+    const double j_abs = std::abs(j);
     if (span.limits != nullptr && span.check->count == 0) {
         const ProfileLimits& l = *span.limits;
-        return v <= l.max_velocity && a <= l.max_acceleration && j <= l.max_jerk;
+        return v.hi <= l.max_velocity && a_top <= l.max_acceleration && j_abs <= l.max_jerk;
     }
     const PieceCheck& check = *span.check;
-    if (v > check.cruise_velocity || a > check.straight_acceleration || j > check.straight_jerk) return false;
+    if (v.hi > check.cruise_velocity || a_top > check.straight_acceleration || j_abs > check.straight_jerk)
+        return false;
     for (int k = 0; k < check.count; ++k) {
-        const CurvedAxis& c = check.axes[static_cast<std::size_t>(k)];
-        if (c.d2 * v * v + c.d1 * a > c.max_acceleration) return false;
-        if (c.d3 * v * v * v + 3.0 * c.d2 * v * a + c.d1 * j > c.max_jerk) return false;
+        if (!axis_fits(check.axes[static_cast<std::size_t>(k)], v, a, j)) return false;
     }
     return true;
 }
@@ -44,14 +75,17 @@ bool phase_part_fits(const CheckedSpan& span, double v, double a, double j, doub
     for (int h = 0; h < 2; ++h) {
         const Motion s = advance(v, a, j, cuts[h]);
         const Motion e = advance(v, a, j, cuts[h + 1]);
-        double v_top = std::max(s.v, e.v);
-        // The speed peaks inside where the acceleration passes through 0.
+        SignedRange speed{std::min(s.v, e.v), std::max(s.v, e.v)};
+        // The speed has its extreme inside where the acceleration passes through 0.
         if (j != 0) {
             const double x_zero = -a / j;
-            if (x_zero > cuts[h] && x_zero < cuts[h + 1]) v_top = std::max(v_top, advance(v, a, j, x_zero).v);
+            if (x_zero > cuts[h] && x_zero < cuts[h + 1]) {
+                const double v_zero = advance(v, a, j, x_zero).v;
+                speed = {std::min(speed.lo, v_zero), std::max(speed.hi, v_zero)};
+            }
         }
-        const double a_top = std::max(std::abs(s.a), std::abs(e.a));
-        if (!part_fits(span, v_top, a_top, std::abs(j))) return false;
+        speed.lo = std::max(0.0, speed.lo);
+        if (!part_fits(span, speed, {std::min(s.a, e.a), std::max(s.a, e.a)}, j)) return false;
     }
     return true;
 }

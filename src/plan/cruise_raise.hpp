@@ -11,14 +11,27 @@
 
 namespace nckit::plan_detail {
 
-//! One axis of a curved piece: bounds of |q'|, |q''|, |q'''| over the piece and the axis's
-//! acceleration and jerk limits.
+//! The values a derivative takes over a piece, with their signs.
+struct SignedRange {
+    double lo = 0;
+    double hi = 0;
+};
+
+//! One axis of a curved piece: bounds of |q'|, |q''|, |q'''| over the piece, the ranges of
+//! q', q'', q''' with their signs (within ±d1, ±d2, ±d3) and the axis's acceleration and jerk
+//! limits. The signs let the check see where the path's own jerk q'·s⃛ works against the
+//! turning's q'''·ṡ³ (speeding up out of a curve, braking into one).
 struct CurvedAxis {
     double d1 = 0;
     double d2 = 0;
     double d3 = 0;
     double max_acceleration = 0;  //!< mm/s²
     double max_jerk = 0;          //!< mm/s³
+    //! Set when q1, q2, q3 are known; otherwise the check takes ±d1, ±d2, ±d3.
+    bool signs_known = false;
+    SignedRange q1{};
+    SignedRange q2{};
+    SignedRange q3{};
 };
 
 //! What a piece allows beyond its rectangular (v, a, j) limits: its curved axes (count 0: none

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "bell_search.hpp"
 #include "profile_inverse.hpp"
 
 namespace nckit::plan_detail {
@@ -265,6 +266,8 @@ std::size_t Lookahead::merge_following(Profile& profile) {
     double length = front.length;
     std::size_t first = front.count;  // segment index of run m
     std::size_t taken = 1;
+    BellExtent widest{1, front.length, v, merge_spans_.size(), plan_s};
+    BellExtent taken_extent = widest;
     for (std::size_t m = 1; m < runs_.size() && m < max_merged_runs; ++m) {
         // Not across a stop or an event, and only up to an end speed the passes have fixed.
         if (!(runs_[m - 1].junction_max > 0) || !segments_[first - 1].after.empty()) break;
@@ -298,10 +301,12 @@ std::size_t Lookahead::merge_following(Profile& profile) {
             profile = merged;
             plan_s = merged.duration_s();
             taken = m + 1;
-        } else if (m + 1 - taken >= merge_patience) {
-            break;
         }
+        widest = {m + 1, length, v, merge_spans_.size(), plan_s};
+        if (taken == m + 1) taken_extent = widest;
+        if (m + 1 - taken >= merge_patience) break;
     }
+    if (const std::size_t bell_runs = bell_curved_runs(profile, taken_extent, widest, rates.widest)) return bell_runs;
     // A run of curved pieces alone: its own profile with higher rates, where its pieces allow.
     if (taken == 1 && front_rates.curved) {
         merge_spans_.resize(front.count);
@@ -312,6 +317,30 @@ std::size_t Lookahead::merge_following(Profile& profile) {
         }
     }
     return taken;
+}
+
+std::size_t Lookahead::bell_curved_runs(Profile& profile, const BellExtent& taken, const BellExtent& widest,
+                                        const ProfileLimits& rates) {
+    const BellSeed seed{rates.max_acceleration, rates.max_jerk, rates.max_velocity};
+    // Against the plan of the widest extent: there the runs after the taken ones keep their own
+    // profiles, which a bell over the taken runs leaves as they are.
+    double best_gain_s = 0;
+    std::size_t runs = 0;
+    Profile bell;
+    for (const BellExtent* extent : {&widest, &taken}) {
+        if (extent == &taken && taken.runs == widest.runs) break;
+        merge_spans_.resize(extent->span_count);
+        if (!fastest_bell(extent->length, start_speed_, extent->v_end, seed, merge_spans_, bell)) continue;
+        const double planned_s = extent == &taken ? profile.duration_s() : widest.plan_s;
+        const double gain_s = planned_s - bell.duration_s();
+        if (gain_s > best_gain_s + 1e-9 * planned_s) {
+            best_gain_s = gain_s;
+            bell_ = bell;
+            runs = extent->runs;
+        }
+    }
+    if (runs > 0) profile = bell_;
+    return runs;
 }
 
 void Lookahead::commit_front(double v_end) {

@@ -162,6 +162,19 @@ private:
     //! Appends the checks of `count` segments from index `first` to merge_spans_; false when
     //! one of them may not lie inside a merged profile.
     [[nodiscard]] bool append_merge_spans(std::size_t first, std::size_t count);
+    //! A stretch of runs merge_following looked at: how many, their length, the end speed the
+    //! passes gave it, how many of merge_spans_ it holds and the best plan found for it.
+    struct BellExtent {
+        std::size_t runs = 0;
+        double length = 0;           //!< mm
+        double v_end = 0;            //!< mm/s
+        std::size_t span_count = 0;  //!< of merge_spans_
+        double plan_s = 0;           //!< s
+    };
+    //! Replaces `profile` by a bell (bell_search.hpp) over the taken or the widest extent where
+    //! one is faster; the number of runs it covers, 0 when none is faster.
+    [[nodiscard]] std::size_t bell_curved_runs(Profile& profile, const BellExtent& taken, const BellExtent& widest,
+                                               const ProfileLimits& rates);
     [[nodiscard]] bool joins_last_run(const WindowSegment& segment) const;
     //! S-curve only: whether the last run can take a segment whose limits are slightly below
     //! its own by lowering its limits to the segment's (`lowered`) without lowering any bound.
@@ -178,6 +191,7 @@ private:
     std::size_t window_;
     std::vector<CheckedSpan> spans_;        //!< commit_front's, reused
     std::vector<CheckedSpan> merge_spans_;  //!< merge_following's, reused
+    Profile bell_;                          //!< bell_curved_runs' best, reused
     RingQueue<WindowSegment> segments_;
     RingQueue<WindowRun> runs_;
     RingQueue<TrajectoryPiece> output_;

@@ -1,0 +1,97 @@
+#include "bell_profile.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace nckit::plan_detail {
+
+namespace {
+
+//! Bisection steps for the peak speed when the bell has no room to cruise.
+constexpr int peak_steps = 60;
+
+//! Up to three phases changing the speed from v_from to v_to: jerk `first` until the
+//! acceleration reaches its peak, held there, jerk `second` back to 0.
+struct Change {
+    std::array<ProfilePhase, 3> phases{};
+    int count = 0;
+    double distance = 0;  //!< mm
+};
+
+Change speed_change(double v_from, double v_to, double max_acceleration, double first_jerk, double second_jerk) {
+    Change c;
+    const double dv = std::abs(v_to - v_from);
+    if (!(dv > 0)) return c;
+    const double sign = v_to > v_from ? 1.0 : -1.0;
+    // The speed gained while the acceleration rises to A and falls back: A²·(1/(2·j1) + 1/(2·j2)).
+    const double per_a2 = 0.5 / first_jerk + 0.5 / second_jerk;
+    const double peak = std::min(max_acceleration, std::sqrt(dv / per_a2));
+    const double hold_s = std::max(0.0, (dv - peak * peak * per_a2) / peak);
+    const std::array<double, 3> durations = {peak / first_jerk, hold_s, peak / second_jerk};
+    const std::array<double, 3> jerks = {sign * first_jerk, 0.0, -sign * second_jerk};
+    double v = v_from;
+    double a = 0;
+    for (std::size_t i = 0; i < 3; ++i) {
+        const double t = durations[i];
+        const double j = jerks[i];
+        if (!(t > 0)) continue;
+        c.phases[static_cast<std::size_t>(c.count++)] = {t, j, a};
+        c.distance += t * (v + t * (0.5 * a + t * j / 6.0));
+        v += t * (a + 0.5 * t * j);
+        a += t * j;
+    }
+    return c;
+}
+
+Change rise_to(double v_start, double v_peak, const BellRates& r) {
+    return speed_change(v_start, v_peak, r.max_acceleration, r.outer_jerk, r.inner_jerk);
+}
+Change fall_from(double v_peak, double v_end, const BellRates& r) {
+    return speed_change(v_peak, v_end, r.max_acceleration, r.inner_jerk, r.outer_jerk);
+}
+
+double bell_distance(double v_start, double v_end, double v_peak, const BellRates& r) {
+    return rise_to(v_start, v_peak, r).distance + fall_from(v_peak, v_end, r).distance;
+}
+
+}  // namespace
+
+bool bell_profile(double distance, double v_start, double v_end, double v_top, const BellRates& rates, Profile& out) {
+    const double floor_speed = std::max(v_start, v_end);
+    if (!(v_top >= floor_speed) || !(rates.max_acceleration > 0) || !(rates.outer_jerk > 0) ||
+        !(rates.inner_jerk > 0) || !(distance >= 0)) {
+        return false;
+    }
+    if (bell_distance(v_start, v_end, floor_speed, rates) > distance) return false;
+    double peak = v_top;
+    if (bell_distance(v_start, v_end, v_top, rates) > distance) {
+        double lo = floor_speed;
+        double hi = v_top;
+        for (int k = 0; k < peak_steps && hi > lo * (1.0 + 1e-12); ++k) {
+            const double mid = 0.5 * (lo + hi);
+            (bell_distance(v_start, v_end, mid, rates) <= distance ? lo : hi) = mid;
+        }
+        peak = lo;
+    }
+    // The distance the speed changes leave is cruised at the peak (below 1e-12 of it after a
+    // bisection); with no speed to cruise at, there is no bell.
+    const double cruise_mm = std::max(0.0, distance - bell_distance(v_start, v_end, peak, rates));
+    if (cruise_mm > 1e-12 * std::max(1.0, distance) && !(peak > 0)) return false;
+    const Change rise = rise_to(v_start, peak, rates);
+    const Change fall = fall_from(peak, v_end, rates);
+    Profile p;
+    p.start_velocity = v_start;
+    p.end_velocity = v_end;
+    p.distance = distance;
+    const auto append = [&p](const ProfilePhase& phase) {
+        p.phases[static_cast<std::size_t>(p.phase_count++)] = phase;
+    };
+    for (int i = 0; i < rise.count; ++i) append(rise.phases[static_cast<std::size_t>(i)]);
+    if (cruise_mm > 0 && peak > 0) append({cruise_mm / peak, 0.0, 0.0});
+    for (int i = 0; i < fall.count; ++i) append(fall.phases[static_cast<std::size_t>(i)]);
+    out = p;
+    return true;
+}
+
+}  // namespace nckit::plan_detail
