@@ -45,10 +45,14 @@ Change speed_change(double v_from, double v_to, double max_acceleration, double 
 }
 
 Change rise_to(double v_start, double v_peak, const BellRates& r) {
-    return speed_change(v_start, v_peak, r.max_acceleration, r.outer_jerk, r.inner_jerk);
+    return speed_change(v_start, v_peak, r.rise.max_acceleration, r.rise.end_jerk, r.rise.top_jerk);
 }
 Change fall_from(double v_peak, double v_end, const BellRates& r) {
-    return speed_change(v_peak, v_end, r.max_acceleration, r.inner_jerk, r.outer_jerk);
+    return speed_change(v_peak, v_end, r.fall.max_acceleration, r.fall.top_jerk, r.fall.end_jerk);
+}
+
+bool positive(const BellSide& side) {
+    return side.max_acceleration > 0 && side.end_jerk > 0 && side.top_jerk > 0;
 }
 
 double bell_distance(double v_start, double v_end, double v_peak, const BellRates& r) {
@@ -59,10 +63,7 @@ double bell_distance(double v_start, double v_end, double v_peak, const BellRate
 
 bool bell_profile(double distance, double v_start, double v_end, double v_top, const BellRates& rates, Profile& out) {
     const double floor_speed = std::max(v_start, v_end);
-    if (!(v_top >= floor_speed) || !(rates.max_acceleration > 0) || !(rates.outer_jerk > 0) ||
-        !(rates.inner_jerk > 0) || !(distance >= 0)) {
-        return false;
-    }
+    if (!(v_top >= floor_speed) || !positive(rates.rise) || !positive(rates.fall) || !(distance >= 0)) return false;
     if (bell_distance(v_start, v_end, floor_speed, rates) > distance) return false;
     double peak = v_top;
     if (bell_distance(v_start, v_end, v_top, rates) > distance) {

@@ -10,23 +10,29 @@
 
 namespace nckit::plan_detail {
 
-//! Where the search starts: the rates of the runs (their widest acceleration and jerk) and the
-//! highest speed any of them allows.
+//! Where the search starts: the rates of the runs (their widest and tightest acceleration and
+//! jerk) and the highest speed any of them allows.
 struct BellSeed {
-    double acceleration = 0;  //!< mm/s²
-    double jerk = 0;          //!< mm/s³
-    double max_velocity = 0;  //!< mm/s
+    double acceleration = 0;        //!< mm/s², the widest of the runs'
+    double jerk = 0;                //!< mm/s³, the widest of the runs'
+    double tight_acceleration = 0;  //!< mm/s², the tightest of the runs'
+    double tight_jerk = 0;          //!< mm/s³, the tightest of the runs'
+    double max_velocity = 0;        //!< mm/s
 };
 
 //! The fastest bell over `distance` from v_start to v_end (both kept exactly) that
 //! profile_keeps_pieces accepts on `spans`; false when there is none or no span is curved.
-//! A pattern search over the acceleration and the two jerks (multiplying each by a factor,
-//! halving the factor's exponent when no step gains), each with the highest top speed that
-//! fits (bisection): at most max_bell_rates rate sets are tried.
+//! A pattern search over the acceleration and the two jerks of the rise and of the fall
+//! (multiplying a rate by a factor, first on both sides together, then on one; the factor's
+//! exponent halved when no step gains), each rate set with the highest top speed that fits
+//! (bisection, started around the last set's top): at most max_bell_rates rate sets.
 [[nodiscard]] bool fastest_bell(double distance, double v_start, double v_end, const BellSeed& seed,
                                 const std::vector<CheckedSpan>& spans, Profile& out);
 
-//! The most rate sets one search tries.
-inline constexpr int max_bell_rates = 40;
+//! The most rate sets one search tries, and of them the most with both sides moved together
+//! (measured on the 100 semicircles: 20/30 gave 42.381 s at j 5,000, 30/45 41.619 s, 40/60
+//! 41.438 s, planning 0.61, 0.64 and 0.99 s; docs/planner.md).
+inline constexpr int max_bell_rates = 45;
+inline constexpr int max_bell_rates_together = 30;
 
 }  // namespace nckit::plan_detail

@@ -306,7 +306,7 @@ std::size_t Lookahead::merge_following(Profile& profile) {
         if (taken == m + 1) taken_extent = widest;
         if (m + 1 - taken >= merge_patience) break;
     }
-    if (const std::size_t bell_runs = bell_curved_runs(profile, taken_extent, widest, rates.widest)) return bell_runs;
+    if (const std::size_t bell_runs = bell_curved_runs(profile, taken_extent, widest, rates)) return bell_runs;
     // A run of curved pieces alone: its own profile with higher rates, where its pieces allow.
     if (taken == 1 && front_rates.curved) {
         merge_spans_.resize(front.count);
@@ -320,8 +320,9 @@ std::size_t Lookahead::merge_following(Profile& profile) {
 }
 
 std::size_t Lookahead::bell_curved_runs(Profile& profile, const BellExtent& taken, const BellExtent& widest,
-                                        const ProfileLimits& rates) {
-    const BellSeed seed{rates.max_acceleration, rates.max_jerk, rates.max_velocity};
+                                        const MergeRates& rates) {
+    const BellSeed seed{rates.widest.max_acceleration, rates.widest.max_jerk, rates.tightest.max_acceleration,
+                        rates.tightest.max_jerk, rates.widest.max_velocity};
     // Against the plan of the widest extent: there the runs after the taken ones keep their own
     // profiles, which a bell over the taken runs leaves as they are.
     double best_gain_s = 0;

@@ -174,7 +174,7 @@ private:
     //! Replaces `profile` by a bell (bell_search.hpp) over the taken or the widest extent where
     //! one is faster; the number of runs it covers, 0 when none is faster.
     [[nodiscard]] std::size_t bell_curved_runs(Profile& profile, const BellExtent& taken, const BellExtent& widest,
-                                               const ProfileLimits& rates);
+                                               const MergeRates& rates);
     [[nodiscard]] bool joins_last_run(const WindowSegment& segment) const;
     //! S-curve only: whether the last run can take a segment whose limits are slightly below
     //! its own by lowering its limits to the segment's (`lowered`) without lowering any bound.
