@@ -153,6 +153,9 @@ private:
     //! The end speed the forward pass gives run `r` entered at v_start (in v_end), and whether
     //! it is final: no later segment can change it.
     [[nodiscard]] bool end_speed(const WindowRun& r, double v_start, double& v_end) const;
+    //! Whether the end speeds of the runs after the front one (entered at v_front_end) are
+    //! final as well, curved_commit_ahead of them.
+    [[nodiscard]] bool following_runs_final(double v_front_end) const;
     //! The profile of `r` alone, its segments from index `first` on: planned, then raised where
     //! its pieces allow (cruise_raise.hpp).
     [[nodiscard]] Profile run_profile(const WindowRun& r, std::size_t first, double v_start, double v_end);
