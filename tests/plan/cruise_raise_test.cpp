@@ -70,5 +70,33 @@ TEST(CruiseRaise, RaisedProfileKeepsEndSpeedsAndPiecesAndIsNeverSlower) {
     }
 }
 
+TEST(CruiseRaise, SignsLetThePathJerkWorkAgainstTheTurning) {
+    // An axis along the tangent of a circle of radius 4 mm: q' = 1, q''' = -1/r² (the turning
+    // pulls the tangent's jerk back). Speeding up with s⃛ > 0 at 40 mm/s: q'''·v³ + q'·s⃛ =
+    // -4,000 + 4,000 = 0 on the axis, though |q'''|·v³ + |q'|·|s⃛| = 8,000 > 5,000.
+    PieceCheck check;
+    check.axes[0] = {1.0, 0.0, 0.0625, 500.0, 5000.0};
+    check.count = 1;
+    check.cruise_velocity = 41.0;
+    const double t = 0.002;
+    Profile p;
+    p.start_velocity = 40.0;
+    p.phases[0] = {t, 4000.0, 0.0};
+    p.phase_count = 1;
+    p.distance = t * 40.0 + 4000.0 * t * t * t / 6.0;
+    p.end_velocity = 40.0 + 0.5 * 4000.0 * t * t;
+    EXPECT_FALSE(profile_keeps_pieces(p, {{p.distance, &check}}));  // signs unknown: the bounds add up
+    check.axes[0].signs_known = true;
+    check.axes[0].q1 = {0.999, 1.0};
+    check.axes[0].q2 = {0.0, 0.0};
+    check.axes[0].q3 = {-0.0625, -0.062};
+    EXPECT_TRUE(profile_keeps_pieces(p, {{p.distance, &check}}));
+    // Braking (s⃛ < 0) adds to the turning: refused with the signs as well.
+    p.phases[0].jerk = -4000.0;
+    p.distance = t * 40.0 - 4000.0 * t * t * t / 6.0;
+    p.end_velocity = 40.0 - 0.5 * 4000.0 * t * t;
+    EXPECT_FALSE(profile_keeps_pieces(p, {{p.distance, &check}}));
+}
+
 }  // namespace
 }  // namespace nckit::plan_detail
