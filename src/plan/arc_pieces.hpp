@@ -39,8 +39,9 @@ inline constexpr int max_arc_pieces = 1024;
 inline constexpr double jerk_limited_acceleration_share = 0.35;
 inline constexpr double jerk_limited_jerk_share = 0.4;
 //! The same for the pieces of a transition quintic next to an arc. A transition is short and
-//! its run mostly holds the speed between two arcs, so a smaller acceleration share raises its
-//! speed limit where it counts (docs/planner.md, "Ramp transitions").
+//! its run mostly holds the speed between two arcs, so smaller shares raise its speed limit
+//! where it counts; its speed changes are bells, which the pieces' axes check, not these shares
+//! (docs/planner.md, "Ramp transitions" and "Bells").
 inline constexpr double transition_acceleration_share = 0.12;
 inline constexpr double transition_jerk_share = 0.12;
 //! At most this share of an axis's jerk goes to the coupling term 3·d2·v·a.

@@ -18,6 +18,12 @@ constexpr std::size_t merge_patience = 2;
 //! Runs after a curved one whose end speeds must be final before it is committed (on the 100
 //! semicircles at j 5,000: 0, 2, 4, 6, 8 gave 41.62, 41.41, 41.49, 41.46, 40.86 s; more, the same).
 constexpr std::size_t curved_commit_ahead = 8;
+//! S-curve: the most pieces of a transition in one run. The slow middle of a transition is one
+//! run of nearly equal limits, which a bell (bell_search.hpp) can only leave at its end; cut
+//! into runs of this many pieces, the bells may start speeding up inside it (on the 100
+//! semicircles at j 5,000: no cut 40.61 s; 16, 12, 10, 8, 6, 4, 2 pieces 40.61, 40.57, 40.45,
+//! 40.12, 40.83, 40.61, 41.43 s).
+constexpr std::size_t transition_run_pieces = 8;
 
 //! A run's limits are its first segment's, lowered by this factor, and never change: a later
 //! segment joins only when its own limits are at least the run's. Limits that only ever stay
@@ -39,10 +45,20 @@ double rate_spread(const WindowRun& run, const WindowSegment& segment) {
 }
 }  // namespace
 
+bool Lookahead::ends_transition_run(const WindowRun& run, const WindowSegment& segment) const {
+    // Pieces of a transition next to an arc (split for a jerk limit), not a CAM chain's whole
+    // transitions between lines.
+    const auto transition_piece = [](const WindowSegment& s) {
+        return s.path.shape == SegmentShape::quintic && s.check.limits_need_knee;
+    };
+    return run.count >= transition_run_pieces && transition_piece(segment) && transition_piece(segments_.back());
+}
+
 bool Lookahead::joins_last_run(const WindowSegment& segment) const {
     if (runs_.empty() || segments_.back().junction_max <= 0) return false;
     const WindowRun& run = runs_.back();
     if (run.count >= max_run_segments()) return false;
+    if (kind_ == ProfileKind::scurve && ends_transition_run(run, segment)) return false;
     const ProfileLimits& l = segment.limits;
     if (kind_ == ProfileKind::trapezoid) {
         // A trapezoid's acceleration may jump at any junction, so ending a run costs nothing:
@@ -73,6 +89,7 @@ bool Lookahead::lowers_last_run(const WindowSegment& segment, ProfileLimits& low
     if (kind_ != ProfileKind::scurve || runs_.empty() || segments_.back().junction_max <= 0) return false;
     const WindowRun& run = runs_.back();
     if (run.count >= max_run_segments()) return false;
+    if (ends_transition_run(run, segment)) return false;
     const ProfileLimits& l = segment.limits;
     const ProfileLimits& first = run.first_limits;
     // Within run_spread of the run's first limits both ways, so the run never drifts far below

@@ -153,6 +153,9 @@ private:
     //! The end speed the forward pass gives run `r` entered at v_start (in v_end), and whether
     //! it is final: no later segment can change it.
     [[nodiscard]] bool end_speed(const WindowRun& r, double v_start, double& v_end) const;
+    //! Whether `segment`, a piece of the same transition as the run's last, must start a run of
+    //! its own because the run holds transition_run_pieces of them already.
+    [[nodiscard]] bool ends_transition_run(const WindowRun& run, const WindowSegment& segment) const;
     //! Whether the end speeds of the runs after the front one (entered at v_front_end) are
     //! final as well, curved_commit_ahead of them.
     [[nodiscard]] bool following_runs_final(double v_front_end) const;
