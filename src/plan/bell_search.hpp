@@ -29,10 +29,11 @@ struct BellSeed {
 [[nodiscard]] bool fastest_bell(double distance, double v_start, double v_end, const BellSeed& seed,
                                 const std::vector<CheckedSpan>& spans, Profile& out);
 
-//! The most rate sets one search tries, and of them the most with both sides moved together
-//! (measured on the 100 semicircles: 20/30 gave 42.381 s at j 5,000, 30/45 41.619 s, 40/60
-//! 41.438 s, planning 0.61, 0.64 and 0.99 s; docs/planner.md).
-inline constexpr int max_bell_rates = 45;
-inline constexpr int max_bell_rates_together = 30;
+//! The most rate sets one search tries, and of them the most with both sides moved together.
+//! Measured on the 100 semicircles at j 5,000 (cycle, planning time of the whole program):
+//! 30/45 40.12 s in 0.68 s, 40/60 39.98 s in 0.74 s, 60/90 39.97 s in 1.05 s; the slot at F6000
+//! 1.893, 1.888, 1.885 s.
+inline constexpr int max_bell_rates = 60;
+inline constexpr int max_bell_rates_together = 40;
 
 }  // namespace nckit::plan_detail
