@@ -8,8 +8,10 @@ namespace nckit::plan_detail {
 
 namespace {
 
-//! Bisection steps for the peak speed when the bell has no room to cruise.
+//! Bisection steps for the peak speed when the bell has no room to cruise, and their relative
+//! resolution: what the bisection leaves is cruised at the peak, so the distance stays exact.
 constexpr int peak_steps = 60;
+constexpr double peak_resolution = 1e-9;
 
 //! Up to three phases changing the speed from v_from to v_to: jerk `first` until the
 //! acceleration reaches its peak, held there, jerk `second` back to 0.
@@ -66,17 +68,36 @@ bool bell_profile(double distance, double v_start, double v_end, double v_top, c
     if (!(v_top >= floor_speed) || !positive(rates.rise) || !positive(rates.fall) || !(distance >= 0)) return false;
     if (bell_distance(v_start, v_end, floor_speed, rates) > distance) return false;
     double peak = v_top;
-    if (bell_distance(v_start, v_end, v_top, rates) > distance) {
+    const double excess_at_top = bell_distance(v_start, v_end, v_top, rates) - distance;
+    if (excess_at_top > 0) {
+        // The distance grows with the peak: false position with the Illinois rule (the end
+        // kept twice in a row has its value halved), the bracket [lo, hi] always kept, lo the
+        // side that fits.
         double lo = floor_speed;
         double hi = v_top;
-        for (int k = 0; k < peak_steps && hi > lo * (1.0 + 1e-12); ++k) {
-            const double mid = 0.5 * (lo + hi);
-            (bell_distance(v_start, v_end, mid, rates) <= distance ? lo : hi) = mid;
+        double f_lo = bell_distance(v_start, v_end, lo, rates) - distance;
+        double f_hi = excess_at_top;
+        int kept = 0;
+        for (int k = 0; k < peak_steps && hi > lo * (1.0 + peak_resolution); ++k) {
+            double mid = lo - f_lo * (hi - lo) / (f_hi - f_lo);
+            if (!(mid > lo && mid < hi)) mid = 0.5 * (lo + hi);
+            const double f_mid = bell_distance(v_start, v_end, mid, rates) - distance;
+            if (f_mid <= 0) {
+                lo = mid;
+                f_lo = f_mid;
+                if (kept == -1) f_hi *= 0.5;
+                kept = -1;
+            } else {
+                hi = mid;
+                f_hi = f_mid;
+                if (kept == 1) f_lo *= 0.5;
+                kept = 1;
+            }
         }
         peak = lo;
     }
-    // The distance the speed changes leave is cruised at the peak (below 1e-12 of it after a
-    // bisection); with no speed to cruise at, there is no bell.
+    // The distance the speed changes leave is cruised at the peak (a sliver after a bisection);
+    // with no speed to cruise at, there is no bell.
     const double cruise_mm = std::max(0.0, distance - bell_distance(v_start, v_end, peak, rates));
     if (cruise_mm > 1e-12 * std::max(1.0, distance) && !(peak > 0)) return false;
     const Change rise = rise_to(v_start, peak, rates);

@@ -31,7 +31,7 @@ bool any_curved(const std::vector<CheckedSpan>& spans) {
 //! `top_hint` (mm/s, 0 when none) is the top of the last rate set: the search brackets the
 //! new top around it, and leaves the new top there.
 double best_with(double distance, double v_start, double v_end, double v_max, const BellRates& rates,
-                 const std::vector<CheckedSpan>& spans, double& top_hint, Profile& out) {
+                 const std::vector<CheckedSpan>& spans, double& top_hint, FailedSpan& failed, Profile& out) {
     const double floor_speed = std::max(v_start, v_end);
     const double ceiling = std::max(floor_speed, v_max);
     double best_s = std::numeric_limits<double>::infinity();
@@ -39,7 +39,8 @@ double best_with(double distance, double v_start, double v_end, double v_max, co
     const auto fits = [&](double top) {
         ++tried;
         Profile candidate;
-        if (!bell_profile(distance, v_start, v_end, top, rates, candidate) || !profile_keeps_pieces(candidate, spans)) {
+        if (!bell_profile(distance, v_start, v_end, top, rates, candidate) ||
+            !profile_keeps_pieces(candidate, spans, &failed)) {
             return false;
         }
         if (candidate.duration_s() < best_s) {
@@ -99,9 +100,11 @@ bool fastest_bell(double distance, double v_start, double v_end, const BellSeed&
     using Rates = std::array<double, 6>;
     const auto rates_of = [](const Rates& p) { return BellRates{{p[0], p[1], p[2]}, {p[3], p[4], p[5]}}; };
     double top_hint = 0;
+    FailedSpan failed;  // shared by all candidates: most fail where the one before did
     const auto value = [&](const Rates& p, Profile& profile) {
         double hint = top_hint;
-        const double s = best_with(distance, v_start, v_end, seed.max_velocity, rates_of(p), spans, hint, profile);
+        const double s =
+            best_with(distance, v_start, v_end, seed.max_velocity, rates_of(p), spans, hint, failed, profile);
         return std::pair{s, hint};
     };
     // Three starts, the fastest taken: the runs' tightest rates (which every piece allows for

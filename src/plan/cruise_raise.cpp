@@ -92,7 +92,44 @@ bool phase_part_fits(const CheckedSpan& span, double v, double a, double j, doub
 
 }  // namespace
 
-bool profile_keeps_pieces(const Profile& profile, const std::vector<CheckedSpan>& spans) {
+namespace {
+
+//! Whether the span whose time in the profile is [t0, t1] keeps its check, from the phases'
+//! states (for a span looked at out of order).
+bool span_fits(const Profile& profile, const CheckedSpan& span, double t0, double t1) {
+    double phase_start_s = 0;
+    double v = profile.start_velocity;
+    for (int phase = 0; phase < profile.phase_count; ++phase) {
+        const ProfilePhase& ph = profile.phases[static_cast<std::size_t>(phase)];
+        const double phase_end_s = phase_start_s + ph.duration_s;
+        if (phase_end_s >= t0 || phase + 1 == profile.phase_count) {
+            const double x0 = std::max(0.0, t0 - phase_start_s);
+            const double x1 = std::min(ph.duration_s, t1 - phase_start_s);
+            if (x1 >= x0 && !phase_part_fits(span, v, ph.acceleration, ph.jerk, x0, x1)) return false;
+            if (t1 < phase_end_s) break;
+        }
+        v = advance(v, ph.acceleration, ph.jerk, ph.duration_s).v;
+        phase_start_s = phase_end_s;
+    }
+    return true;
+}
+
+}  // namespace
+
+bool profile_keeps_pieces(const Profile& profile, const std::vector<CheckedSpan>& spans, FailedSpan* failed) {
+    const double total_s = profile.duration_s();
+    // The span that failed the last profile first: profiles tried one after the other mostly
+    // fail at the same place.
+    if (failed != nullptr && failed->index < spans.size()) {
+        ProfileWalker hint_walker(profile);
+        const CheckedSpan& span = spans[failed->index];
+        const double t0 = hint_walker.time_at(profile.start_position + failed->offset_mm);
+        const double t1 =
+            failed->index + 1 == spans.size()
+                ? total_s
+                : std::max(t0, hint_walker.time_at(profile.start_position + failed->offset_mm + span.length));
+        if (!span_fits(profile, span, t0, t1)) return false;
+    }
     ProfileWalker walker(profile);
     double offset_mm = 0;
     double t0 = 0;
@@ -101,9 +138,9 @@ bool profile_keeps_pieces(const Profile& profile, const std::vector<CheckedSpan>
     double phase_start_s = 0;
     double v = profile.start_velocity;
     double a = 0;
-    const double total_s = profile.duration_s();
     for (std::size_t n = 0; n < spans.size(); ++n) {
         const CheckedSpan& span = spans[n];
+        const double start_mm = offset_mm;
         offset_mm += span.length;
         const double t1 =
             n + 1 == spans.size() ? total_s : std::max(t0, walker.time_at(profile.start_position + offset_mm));
@@ -113,7 +150,10 @@ bool profile_keeps_pieces(const Profile& profile, const std::vector<CheckedSpan>
             const double phase_end_s = phase_start_s + ph.duration_s;
             const double x0 = std::max(0.0, t0 - phase_start_s);
             const double x1 = std::min(ph.duration_s, t1 - phase_start_s);
-            if (x1 >= x0 && !phase_part_fits(span, v, a, ph.jerk, x0, x1)) return false;
+            if (x1 >= x0 && !phase_part_fits(span, v, a, ph.jerk, x0, x1)) {
+                if (failed != nullptr) *failed = {n, start_mm};
+                return false;
+            }
             if (t1 < phase_end_s || phase + 1 == profile.phase_count) break;
             v = advance(v, a, ph.jerk, ph.duration_s).v;
             phase_start_s = phase_end_s;

@@ -4,6 +4,7 @@
 // it might see, but where the run's profile holds its speed there, the turning may take the
 // whole acceleration (docs/planner.md, "Speed along an arc (S-curve)").
 #include <array>
+#include <cstddef>
 #include <limits>
 #include <vector>
 
@@ -65,7 +66,14 @@ struct CheckedSpan {
 //! every curved axis, |s̈| and |s⃛| the straight axes' limits, and v <= cruise_velocity (bounds
 //! taken together, so the test errs on the safe side); a span with `limits` and no curved axis
 //! keeps v, |s̈| and |s⃛| within them instead.
-[[nodiscard]] bool profile_keeps_pieces(const Profile& profile, const std::vector<CheckedSpan>& spans);
+//! Where profile_keeps_pieces found a span out of its limits: its index and its start along
+//! the spans (mm). Passed to the next call, that span is checked first.
+struct FailedSpan {
+    std::size_t index = static_cast<std::size_t>(-1);
+    double offset_mm = 0;
+};
+[[nodiscard]] bool profile_keeps_pieces(const Profile& profile, const std::vector<CheckedSpan>& spans,
+                                        FailedSpan* failed = nullptr);
 
 //! The fastest profile over `distance` from v_start to v_end with the acceleration and jerk of
 //! `limits` and a top speed between limits.max_velocity and `cruise_velocity` that
