@@ -303,8 +303,10 @@ struct Planner::Impl {
     }
 
     void drain_chains() {
-        Move smoothed;
-        while (chains.pop(smoothed)) plan(smoothed);
+        while (const Move* smoothed = chains.ready()) {
+            plan(*smoothed);
+            chains.drop_ready();
+        }
     }
 
     void finish() {
