@@ -10,7 +10,8 @@
 #include <cstddef>
 #include <vector>
 
-#include "move_ring.hpp"
+#include "nckit/interp/move.hpp"
+#include "ring_queue.hpp"
 
 namespace nckit::plan_detail {
 
@@ -74,7 +75,7 @@ private:
 
     std::array<double, 2 * chain_half_width + 1> weights_{};  //!< the kernel K
     // The current chain: vertices 0..n_ (the lines' end points), the first at chain index 0.
-    MoveRing held_;             //!< lines not yet handed out; held_.front() ends at vertex emitted_ + 1
+    RingQueue<Move> held_;      //!< lines not yet handed out; held_.front() ends at vertex emitted_ + 1
     std::vector<Vec3> points_;  //!< written vertices from points_base_
     long points_base_ = 0;
     std::vector<Vec3> residuals_;  //!< P − K·P from residuals_base_ (filled up to next_residual_)
@@ -87,7 +88,7 @@ private:
     Vec3 last_direction_{};
     AxisVector last_to_;  //!< where the chain's last line ends, every axis
     double tolerance_mm_ = 0;
-    MoveRing out_;
+    RingQueue<Move> out_;
     // The merged line being grown: from the anchor (vertex anchor_index_) over merged_count_ lines.
     Move merged_;
     long anchor_index_ = 0;
