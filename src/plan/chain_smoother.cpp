@@ -144,10 +144,12 @@ bool ChainSmoother::pop(Move& out) {
 // (K alone pulls every vertex in by about n·h²/(4r)), while the noise of the decimals, at the
 // highest frequencies of the chain, is removed as by K.
 void ChainSmoother::advance() {
-    // A chain of at most three lines has only fixed vertices (the first and last two): nothing
-    // reads its residuals, whose reflections over so short a chain would cost most of the time of
-    // a program of corners (every line a chain of its own).
-    if (ended_ && n_ <= 3) next_residual_ = std::max(next_residual_, n_ + 1);
+    // A chain of at most three lines is handed out as written: its residuals' reflections over so
+    // short a chain, and the vertex loop, would cost most of the time of a program of corners.
+    if (ended_ && n_ <= 3 && next_vertex_ == 0) {
+        release_as_written();
+        return;
+    }
     while (next_residual_ <= n_ && (ended_ || next_residual_ + half <= n_)) {
         const long j = next_residual_;
         // Inside the chain the taps read the stored vertices directly; near its ends through
@@ -198,6 +200,20 @@ void ChainSmoother::advance() {
         residuals_base_ += residuals_unused;
     }
     if (ended_ && next_vertex_ > n_) n_ = -1;
+}
+
+// A chain of at most three lines has only fixed vertices (the first and last two), and no line
+// of it is merged with another (a merge needs an inner vertex that is not fixed): each line
+// leaves as it came, with the tolerance of an exact join (release_merged). A program of corners
+// (every line a chain of its own) passes here with every line.
+void ChainSmoother::release_as_written() {
+    while (!held_.empty()) {
+        std::get<Line>(held_.front().what).path.tolerance_mm = tolerance_mm_;
+        out_.push_back(std::move(held_.front()));
+        held_.pop_front();
+    }
+    next_vertex_ = n_ + 1;
+    n_ = -1;
 }
 
 bool ChainSmoother::is_fixed(long v) const {

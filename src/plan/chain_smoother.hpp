@@ -8,10 +8,10 @@
 // follow the smooth curve the points sample (docs/planner.md, "CAM polylines").
 #include <array>
 #include <cstddef>
-#include <deque>
 #include <vector>
 
 #include "nckit/interp/move.hpp"
+#include "ring_queue.hpp"
 
 namespace nckit::plan_detail {
 
@@ -50,6 +50,10 @@ public:
     void flush();
     //! The next line, with its end points smoothed, if one is ready.
     bool pop(Move& out);
+    //! The line pop() would hand out, in place (null when none is ready): valid until
+    //! drop_ready() or the next push() or flush(). Saves copying a move per line.
+    [[nodiscard]] const Move* ready() { return out_.empty() ? nullptr : &out_.front(); }
+    void drop_ready() { out_.pop_front(); }
     [[nodiscard]] bool holding() const { return !held_.empty() || !out_.empty(); }
 
 private:
@@ -65,12 +69,13 @@ private:
     void start(const Line& line, double tolerance_mm);
     void advance();
     void emit(long vertex, const Vec3& at);
+    void release_as_written();
     void release_merged(long next);
     [[nodiscard]] bool is_fixed(long vertex) const;
 
     std::array<double, 2 * chain_half_width + 1> weights_{};  //!< the kernel K
     // The current chain: vertices 0..n_ (the lines' end points), the first at chain index 0.
-    std::deque<Move> held_;     //!< lines not yet handed out; held_.front() ends at vertex emitted_ + 1
+    RingQueue<Move> held_;      //!< lines not yet handed out; held_.front() ends at vertex emitted_ + 1
     std::vector<Vec3> points_;  //!< written vertices from points_base_
     long points_base_ = 0;
     std::vector<Vec3> residuals_;  //!< P − K·P from residuals_base_ (filled up to next_residual_)
@@ -83,7 +88,7 @@ private:
     Vec3 last_direction_{};
     AxisVector last_to_;  //!< where the chain's last line ends, every axis
     double tolerance_mm_ = 0;
-    std::deque<Move> out_;
+    RingQueue<Move> out_;
     // The merged line being grown: from the anchor (vertex anchor_index_) over merged_count_ lines.
     Move merged_;
     long anchor_index_ = 0;

@@ -174,8 +174,8 @@ double max_abs(double c, double a, double b, double sweep) {
 }  // namespace
 
 DerivativeBounds derivative_bounds(const PathSegment& g) {
+    if (g.shape == SegmentShape::quintic) return quintic_bounds(g);  // before b: it is zeroed
     DerivativeBounds b;
-    if (g.shape == SegmentShape::quintic) return quintic_bounds(g);
     for (std::size_t i = 0; i < axis_count; ++i) b.d1[i] = std::abs(g.rate[i]);
     if (!(g.radius_mm > 0)) return b;  // a line: |p'| = 1 on the measured axes by construction
     // Over the arc's own sweep, not the whole circle: with θ = k·s in [0, k·length],

@@ -171,7 +171,9 @@ struct Planner::Impl {
         return true;
     }
 
-    void motion(PathSegment path, double feed_mm_s, bool blendable, PathControl control, const Move& move) {
+    //! `path` by reference: a path segment passed by value is copied into the call's arguments
+    //! (a few hundred bytes per move), and then once more into the pending slot.
+    void motion(const PathSegment& path, double feed_mm_s, bool blendable, PathControl control, const Move& move) {
         if (!(path.length > min_move_length)) {
             if (control.exact_stop) release_pending(true);
             return;
@@ -188,7 +190,7 @@ struct Planner::Impl {
             kind == ProfileKind::trapezoid && path.shape == SegmentShape::arc ? trapezoid_blend_normal_share : 0.5;
         next.normal_share = share;
         next.full_length = path.length;
-        next.path = std::move(path);
+        next.path = path;
         next.feed_mm_s = feed_mm_s;
         next.blendable = blendable;
         next.control = control;
@@ -275,7 +277,7 @@ struct Planner::Impl {
         Pending& next = fresh_slot();
         next.limits = limits;
         next.full_length = path.length;
-        next.path = std::move(path);
+        next.path = path;
         next.feed_mm_s = speed_mm_s;
         next.blendable = false;
         next.spindle_locked = true;
@@ -303,8 +305,10 @@ struct Planner::Impl {
     }
 
     void drain_chains() {
-        Move smoothed;
-        while (chains.pop(smoothed)) plan(smoothed);
+        while (const Move* smoothed = chains.ready()) {
+            plan(*smoothed);
+            chains.drop_ready();
+        }
     }
 
     void finish() {

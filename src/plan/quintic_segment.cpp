@@ -185,7 +185,10 @@ DerivativeBounds quintic_bounds(const PathSegment& g) {
     // depend on the order it is searched in: by halving.
     std::array<double, bound_samples> at;  // every element set below
     for (std::size_t k = 0; k < bound_samples; ++k) at[k] = h * sample_index[k];
-    std::array<double, bound_samples> speed2{};
+    // |p'|² at the samples: the first axis that moves sets them (0 + x is x, and a memset of
+    // them cost as much as the sums), the others add to them.
+    std::array<double, bound_samples> speed2;  // every element set below
+    bool speed2_set = false;
     double speed2_start = 0;
     std::array<double, 3> most{};
     for (std::size_t i = 0; i < 3; ++i) {
@@ -200,11 +203,17 @@ DerivativeBounds quintic_bounds(const PathSegment& g) {
             const double s = at[k];
             slope[k] = c1 + s * (c2 + s * (c3 + s * (c4 + s * 5 * c5)));
         }
-        for (std::size_t k = 0; k < bound_samples; ++k) speed2[k] += slope[k] * slope[k];
+        if (speed2_set) {
+            for (std::size_t k = 0; k < bound_samples; ++k) speed2[k] += slope[k] * slope[k];
+        } else {
+            for (std::size_t k = 0; k < bound_samples; ++k) speed2[k] = slope[k] * slope[k];
+            speed2_set = true;
+        }
         speed2_start += c1 * c1;
         for (double& d : slope) d = std::abs(d);
         most[i] = std::max(std::abs(c1), largest(slope));
     }
+    if (!speed2_set) speed2.fill(0);  // no axis moves (then nothing is sampled: not reached)
     const double speed2_most = std::max(speed2_start, largest(speed2));
     for (std::size_t i = 0; i < 3; ++i) {
         if (sample_axis[i]) b.d1[i] = std::min(hull[i], most[i] + b.d2[i] * h / 2) * (1 + bound_pad);

@@ -305,19 +305,16 @@ bool make_transition(const PathSegment& before, double before_room, const PathSe
     return true;
 }
 
-bool rebuild_with_end_state(Transition& transition, const std::array<double, 3>& end_position,
-                            const std::array<double, 3>& end_d1, const std::array<double, 3>& end_d2,
-                            double tolerance_mm) {
-    // Built in place. Failing, the end state is put back and the curve with it: a chained curve
-    // is the quintic between its states with its own length (single_quintic), so building it
-    // again gives the same numbers; any other curve is kept as a copy.
+namespace {
+
+//! rebuild_with_end_state's build in place; failing, the end state is put back, and the curve
+//! holds whatever the failed build left.
+bool build_end_state(Transition& transition, const std::array<double, 3>& end_position,
+                     const std::array<double, 3>& end_d1, const std::array<double, 3>& end_d2, double tolerance_mm) {
     PathPoint& end = transition.end;
     const std::array<double, 3> old_position{end.position[0], end.position[1], end.position[2]};
     const std::array<double, 3> old_d1{end.d1[0], end.d1[1], end.d1[2]};
     const std::array<double, 3> old_d2{end.d2[0], end.d2[1], end.d2[2]};
-    const double old_length = transition.curve.length;
-    std::optional<PathSegment> kept;
-    if (!transition.chained) kept = transition.curve;
     // A chained transition that keeps its end point and direction keeps the length curve_length
     // gave it (which needs no trigonometry again).
     const bool same_length = transition.chained && end_position == old_position && end_d1 == old_d1;
@@ -329,6 +326,7 @@ bool rebuild_with_end_state(Transition& transition, const std::array<double, 3>&
             end.d2[i] = d2[i];
         }
     };
+    const double old_length = transition.curve.length;
     set_end(end_position, end_d1, end_d2);
     const double length = same_length ? old_length : curve_length(transition, transition.start, end, true);
     double deviation_mm = 0;
@@ -337,11 +335,27 @@ bool rebuild_with_end_state(Transition& transition, const std::array<double, 3>&
         return true;
     }
     set_end(old_position, old_d1, old_d2);
-    if (kept) {
-        transition.curve = *kept;
-    } else {
-        write_quintic(transition.curve, transition.start, end, old_length, AxisVector{});
+    return false;
+}
+
+}  // namespace
+
+bool rebuild_with_end_state(Transition& transition, const std::array<double, 3>& end_position,
+                            const std::array<double, 3>& end_d1, const std::array<double, 3>& end_d2,
+                            double tolerance_mm) {
+    // Built in place. Failing, the end state is put back and the curve with it: a chained curve
+    // is the quintic between its states with its own length (single_quintic), so building it
+    // again gives the same numbers; any other curve is kept as a copy (a local of its own: an
+    // optional copy was zeroed on every call, chained or not).
+    if (!transition.chained) {
+        const PathSegment kept = transition.curve;
+        if (build_end_state(transition, end_position, end_d1, end_d2, tolerance_mm)) return true;
+        transition.curve = kept;
+        return false;
     }
+    const double old_length = transition.curve.length;
+    if (build_end_state(transition, end_position, end_d1, end_d2, tolerance_mm)) return true;
+    write_quintic(transition.curve, transition.start, transition.end, old_length, AxisVector{});
     return false;
 }
 

@@ -24,6 +24,10 @@ struct SegmentOrigin {
 //! Pieces of a whole ramp transition (shared among its quintics by length).
 inline constexpr int ramp_transition_pieces = 48;
 
+//! The check of a segment that has none (cruise_velocity 0): one constant, where a default
+//! argument `{}` zeroed a new one at every call.
+inline const PieceCheck no_piece_check{};
+
 class WindowFeed {
 public:
     //! machine and lookahead must outlive the feed.
@@ -33,7 +37,7 @@ public:
     //! One segment as it is; junction_max 0 ends it at rest.
     void add_segment(const PathSegment& path, const ProfileLimits& limits, double junction_max,
                      const SegmentOrigin& origin, bool blend, std::vector<WindowEvent> after,
-                     bool continues_move = false, const PieceCheck& check = {});
+                     bool continues_move = false, const PieceCheck& check = no_piece_check);
 
     //! A transition between two motions (a blend, fed at feed_mm_s): under a jerk limit one that
     //! joins an arc goes in pieces whose speed follows its curvature; others whole.
