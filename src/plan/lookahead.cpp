@@ -24,6 +24,9 @@ constexpr std::size_t curved_commit_ahead = 8;
 //! semicircles at j 5,000: no cut 40.61 s; 16, 12, 10, 8, 6, 4, 2 pieces 40.61, 40.57, 40.45,
 //! 40.12, 40.83, 40.61, 41.43 s).
 constexpr std::size_t transition_run_pieces = 8;
+//! The most segments a bell is searched over: each rate set walks them all, so this bounds the
+//! search's cost per commit (a semicircle and its transitions are about 200).
+constexpr std::size_t max_bell_spans = 1024;
 
 //! A run's limits are its first segment's, lowered by this factor, and never change: a later
 //! segment joins only when its own limits are at least the run's. Limits that only ever stay
@@ -367,6 +370,7 @@ std::size_t Lookahead::bell_curved_runs(Profile& profile, const BellExtent& take
     Profile bell;
     for (const BellExtent* extent : {&widest, &taken}) {
         if (extent == &taken && taken.runs == widest.runs) break;
+        if (extent->span_count > max_bell_spans) continue;
         merge_spans_.resize(extent->span_count);
         if (!fastest_bell(extent->length, start_speed_, extent->v_end, seed, merge_spans_, bell)) continue;
         const double planned_s = extent == &taken ? profile.duration_s() : widest.plan_s;
