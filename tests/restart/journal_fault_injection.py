@@ -236,7 +236,11 @@ def check_program(args, rng: random.Random, name: str, machine: str, verb: str, 
             at = rng.randrange(start, end - 1)
             flipped[at] ^= 1 << rng.randrange(7)
             torn.write_bytes(bytes(flipped))
-            p.check_restart(torn, f"run {k} byte {at} flipped", before)
+            # A flip that leaves the record whole (bit 5 of a checksum letter: 'a' to 'A', the
+            # same hex digit) is no damage: that journal restarts after the record, checked
+            # against the original like any other, not against the one cut before it.
+            damaged = last_complete_block(bytes(flipped)) == last_complete_block(data[:start])
+            p.check_restart(torn, f"run {k} byte {at} flipped", before if damaged else None)
     if killed == 0:
         raise Failure("no run was killed before its end")
     return f"{p.blocks} blocks, {args.runs} runs, {killed} killed, restarts: {outcomes}"
