@@ -34,19 +34,16 @@ double magnitude(SignedRange x) {
 
 //! Whether an axis keeps its limits for every speed in `v`, path acceleration in `a` and the
 //! path jerk j: q''·ṡ² + q'·s̈ and q'''·ṡ³ + 3·q''·ṡ·s̈ + q'·s⃛ over their ranges.
-bool axis_fits(const CurvedAxis& axis, SignedRange v, SignedRange a, double j) {
-    CurvedAxis c = axis;
-    if (!c.signs_known) {
-        c.q1 = {-c.d1, c.d1};
-        c.q2 = {-c.d2, c.d2};
-        c.q3 = {-c.d3, c.d3};
-    }
+bool axis_fits(const CurvedAxis& c, SignedRange v, SignedRange a, double j) {
+    const SignedRange q1 = c.signs_known ? c.q1 : SignedRange{-c.d1, c.d1};
+    const SignedRange q2 = c.signs_known ? c.q2 : SignedRange{-c.d2, c.d2};
+    const SignedRange q3 = c.signs_known ? c.q3 : SignedRange{-c.d3, c.d3};
     const SignedRange v2{v.lo * v.lo, v.hi * v.hi};
     const SignedRange v3{v2.lo * v.lo, v2.hi * v.hi};
-    if (magnitude(sum(product(c.q2, v2), product(c.q1, a))) > c.max_acceleration) return false;
-    const SignedRange turning = product(c.q3, v3);
-    const SignedRange coupling = product({3.0 * c.q2.lo, 3.0 * c.q2.hi}, product(v, a));
-    const SignedRange path = product(c.q1, {j, j});
+    if (magnitude(sum(product(q2, v2), product(q1, a))) > c.max_acceleration) return false;
+    const SignedRange turning = product(q3, v3);
+    const SignedRange coupling = product({3.0 * q2.lo, 3.0 * q2.hi}, product(v, a));
+    const SignedRange path = product(q1, {j, j});
     return magnitude(sum(sum(turning, coupling), path)) <= c.max_jerk;
 }
 
@@ -90,29 +87,29 @@ bool phase_part_fits(const CheckedSpan& span, double v, double a, double j, doub
     return true;
 }
 
-}  // namespace
-
-namespace {
-
-//! Whether the span whose time in the profile is [t0, t1] keeps its check, from the phases'
-//! states (for a span looked at out of order).
-bool span_fits(const Profile& profile, const CheckedSpan& span, double t0, double t1) {
+//! Where a walk along a profile's phases stands: the phase, its start time and its start speed.
+//! Spans are checked with non-decreasing times, each from the phase the last one ended in.
+struct PhaseCursor {
+    int phase = 0;
     double phase_start_s = 0;
-    double v = profile.start_velocity;
-    for (int phase = 0; phase < profile.phase_count; ++phase) {
-        const ProfilePhase& ph = profile.phases[static_cast<std::size_t>(phase)];
-        const double phase_end_s = phase_start_s + ph.duration_s;
-        if (phase_end_s >= t0 || phase + 1 == profile.phase_count) {
+    double v = 0;  //!< mm/s at the phase start
+
+    //! Whether the span whose time in the profile is [t0, t1] keeps its check.
+    bool span_fits(const Profile& profile, const CheckedSpan& span, double t0, double t1) {
+        while (phase < profile.phase_count) {
+            const ProfilePhase& ph = profile.phases[static_cast<std::size_t>(phase)];
+            const double phase_end_s = phase_start_s + ph.duration_s;
             const double x0 = std::max(0.0, t0 - phase_start_s);
             const double x1 = std::min(ph.duration_s, t1 - phase_start_s);
             if (x1 >= x0 && !phase_part_fits(span, v, ph.acceleration, ph.jerk, x0, x1)) return false;
-            if (t1 < phase_end_s) break;
+            if (t1 < phase_end_s || phase + 1 == profile.phase_count) break;
+            v = advance(v, ph.acceleration, ph.jerk, ph.duration_s).v;
+            phase_start_s = phase_end_s;
+            ++phase;
         }
-        v = advance(v, ph.acceleration, ph.jerk, ph.duration_s).v;
-        phase_start_s = phase_end_s;
+        return true;
     }
-    return true;
-}
+};
 
 }  // namespace
 
@@ -128,36 +125,22 @@ bool profile_keeps_pieces(const Profile& profile, const std::vector<CheckedSpan>
             failed->index + 1 == spans.size()
                 ? total_s
                 : std::max(t0, hint_walker.time_at(profile.start_position + failed->offset_mm + span.length));
-        if (!span_fits(profile, span, t0, t1)) return false;
+        PhaseCursor from_start{0, 0.0, profile.start_velocity};
+        if (!from_start.span_fits(profile, span, t0, t1)) return false;
     }
     ProfileWalker walker(profile);
+    PhaseCursor cursor{0, 0.0, profile.start_velocity};
     double offset_mm = 0;
     double t0 = 0;
-    // The phase the span starts in, and the state at its start.
-    int phase = 0;
-    double phase_start_s = 0;
-    double v = profile.start_velocity;
-    double a = 0;
     for (std::size_t n = 0; n < spans.size(); ++n) {
         const CheckedSpan& span = spans[n];
         const double start_mm = offset_mm;
         offset_mm += span.length;
         const double t1 =
             n + 1 == spans.size() ? total_s : std::max(t0, walker.time_at(profile.start_position + offset_mm));
-        while (phase < profile.phase_count) {
-            const ProfilePhase& ph = profile.phases[static_cast<std::size_t>(phase)];
-            a = ph.acceleration;
-            const double phase_end_s = phase_start_s + ph.duration_s;
-            const double x0 = std::max(0.0, t0 - phase_start_s);
-            const double x1 = std::min(ph.duration_s, t1 - phase_start_s);
-            if (x1 >= x0 && !phase_part_fits(span, v, a, ph.jerk, x0, x1)) {
-                if (failed != nullptr) *failed = {n, start_mm};
-                return false;
-            }
-            if (t1 < phase_end_s || phase + 1 == profile.phase_count) break;
-            v = advance(v, a, ph.jerk, ph.duration_s).v;
-            phase_start_s = phase_end_s;
-            ++phase;
+        if (!cursor.span_fits(profile, span, t0, t1)) {
+            if (failed != nullptr) *failed = {n, start_mm};
+            return false;
         }
         t0 = t1;
     }

@@ -60,18 +60,21 @@ struct CheckedSpan {
     const ProfileLimits* limits = nullptr;
 };
 
-//! Whether `profile` keeps every axis of every span within its limits: each span's time in the
-//! profile is cut at phase boundaries and halved, and on each part the highest speed, |s̈| and
-//! |s⃛| there must satisfy d2·v² + d1·|s̈| <= amax and d3·v³ + 3·d2·v·|s̈| + d1·|s⃛| <= jmax on
-//! every curved axis, |s̈| and |s⃛| the straight axes' limits, and v <= cruise_velocity (bounds
-//! taken together, so the test errs on the safe side); a span with `limits` and no curved axis
-//! keeps v, |s̈| and |s⃛| within them instead.
 //! Where profile_keeps_pieces found a span out of its limits: its index and its start along
 //! the spans (mm). Passed to the next call, that span is checked first.
 struct FailedSpan {
     std::size_t index = static_cast<std::size_t>(-1);
     double offset_mm = 0;
 };
+
+//! Whether `profile` keeps every axis of every span within its limits: each span's time in the
+//! profile is cut at phase boundaries and halved, and on each part the speeds, path accelerations
+//! and jerk there must keep q''·ṡ² + q'·s̈ within amax and q'''·ṡ³ + 3·q''·ṡ·s̈ + q'·s⃛ within jmax
+//! on every curved axis, in interval arithmetic over the ranges of q', q'', q''' (±d1, ±d2, ±d3
+//! where their signs are unknown; the bounds are taken together, so the test errs on the safe
+//! side), |s̈| and |s⃛| within the straight axes' limits, and v <= cruise_velocity; a span with
+//! `limits` and no curved axis keeps v, |s̈| and |s⃛| within them instead. `failed`, when given,
+//! is checked first and set to the span that fails.
 [[nodiscard]] bool profile_keeps_pieces(const Profile& profile, const std::vector<CheckedSpan>& spans,
                                         FailedSpan* failed = nullptr);
 
