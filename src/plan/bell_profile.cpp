@@ -8,8 +8,9 @@ namespace nckit::plan_detail {
 
 namespace {
 
-//! Bisection steps for the peak speed when the bell has no room to cruise, and their relative
-//! resolution: what the bisection leaves is cruised at the peak, so the distance stays exact.
+//! Steps of the search for the peak speed when the bell has no room to cruise, and their
+//! relative resolution: what the search leaves is cruised at the peak, so the distance stays
+//! exact.
 constexpr int peak_steps = 60;
 constexpr double peak_resolution = 1e-9;
 
@@ -66,7 +67,8 @@ double bell_distance(double v_start, double v_end, double v_peak, const BellRate
 bool bell_profile(double distance, double v_start, double v_end, double v_top, const BellRates& rates, Profile& out) {
     const double floor_speed = std::max(v_start, v_end);
     if (!(v_top >= floor_speed) || !positive(rates.rise) || !positive(rates.fall) || !(distance >= 0)) return false;
-    if (bell_distance(v_start, v_end, floor_speed, rates) > distance) return false;
+    const double excess_at_floor = bell_distance(v_start, v_end, floor_speed, rates) - distance;
+    if (excess_at_floor > 0) return false;
     double peak = v_top;
     const double excess_at_top = bell_distance(v_start, v_end, v_top, rates) - distance;
     if (excess_at_top > 0) {
@@ -75,7 +77,7 @@ bool bell_profile(double distance, double v_start, double v_end, double v_top, c
         // side that fits.
         double lo = floor_speed;
         double hi = v_top;
-        double f_lo = bell_distance(v_start, v_end, lo, rates) - distance;
+        double f_lo = excess_at_floor;
         double f_hi = excess_at_top;
         int kept = 0;
         for (int k = 0; k < peak_steps && hi > lo * (1.0 + peak_resolution); ++k) {
@@ -96,12 +98,12 @@ bool bell_profile(double distance, double v_start, double v_end, double v_top, c
         }
         peak = lo;
     }
-    // The distance the speed changes leave is cruised at the peak (a sliver after a bisection);
+    // The distance the speed changes leave is cruised at the peak (a sliver after the search);
     // with no speed to cruise at, there is no bell.
-    const double cruise_mm = std::max(0.0, distance - bell_distance(v_start, v_end, peak, rates));
-    if (cruise_mm > 1e-12 * std::max(1.0, distance) && !(peak > 0)) return false;
     const Change rise = rise_to(v_start, peak, rates);
     const Change fall = fall_from(peak, v_end, rates);
+    const double cruise_mm = std::max(0.0, distance - (rise.distance + fall.distance));
+    if (cruise_mm > 1e-12 * std::max(1.0, distance) && !(peak > 0)) return false;
     Profile p;
     p.start_velocity = v_start;
     p.end_velocity = v_end;

@@ -4,7 +4,6 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <utility>
 
 #include "bell_profile.hpp"
 
@@ -101,11 +100,22 @@ bool fastest_bell(double distance, double v_start, double v_end, const BellSeed&
     const auto rates_of = [](const Rates& p) { return BellRates{{p[0], p[1], p[2]}, {p[3], p[4], p[5]}}; };
     double top_hint = 0;
     FailedSpan failed;  // shared by all candidates: most fail where the one before did
-    const auto value = [&](const Rates& p, Profile& profile) {
+    Rates x{};
+    double best_s = std::numeric_limits<double>::infinity();
+    int tried = 0;
+    // Plans the bell of rate set y and takes it when it is faster than the best by `margin`.
+    const auto take_if_faster = [&](const Rates& y, double margin) {
+        ++tried;
         double hint = top_hint;
+        Profile candidate;
         const double s =
-            best_with(distance, v_start, v_end, seed.max_velocity, rates_of(p), spans, hint, failed, profile);
-        return std::pair{s, hint};
+            best_with(distance, v_start, v_end, seed.max_velocity, rates_of(y), spans, hint, failed, candidate);
+        if (!(s < best_s * margin)) return false;
+        best_s = s;
+        top_hint = hint;
+        x = y;
+        out = candidate;
+        return true;
     };
     // Three starts, the fastest taken: the runs' tightest rates (which every piece allows for
     // any profile), their widest (what a line allows), and twice their widest acceleration and
@@ -117,20 +127,8 @@ bool fastest_bell(double distance, double v_start, double v_end, const BellSeed&
     const double tj = seed.tight_jerk > 0 ? seed.tight_jerk : j;
     const std::array<Rates, 3> starts = {Rates{ta, tj, tj, ta, tj, tj}, Rates{a, j, j, a, j, j},
                                          Rates{2 * a, 2 * j, j, 2 * a, 2 * j, j}};
-    Rates x = starts[0];
-    double best_s = std::numeric_limits<double>::infinity();
-    int tried = 0;
-    for (const Rates& start : starts) {
-        Profile candidate;
-        ++tried;
-        const auto [s, hint] = value(start, candidate);
-        if (s < best_s) {
-            best_s = s;
-            top_hint = hint;
-            x = start;
-            out = candidate;
-        }
-    }
+    x = starts[0];  // searched from when no start fits
+    for (const Rates& start : starts) take_if_faster(start, 1.0);
     // First both sides together (directions 0-2), then each side on its own (3-8).
     for (int stage = 0; stage < 2; ++stage) {
         const std::size_t first_d = stage == 0 ? 0 : 3;
@@ -150,14 +148,7 @@ bool fastest_bell(double distance, double v_start, double v_end, const BellSeed&
                         } else {
                             y[d - 3] *= f;
                         }
-                        Profile candidate;
-                        ++tried;
-                        const auto [s, hint] = value(y, candidate);
-                        if (s < best_s * (1.0 - 1e-6)) {
-                            best_s = s;
-                            top_hint = hint;
-                            out = candidate;
-                            x = y;
+                        if (take_if_faster(y, 1.0 - 1e-6)) {
                             moved = true;
                             break;
                         }

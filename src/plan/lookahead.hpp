@@ -153,7 +153,6 @@ private:
     std::size_t window_;
     std::vector<CheckedSpan> spans_;        //!< commit_front's, reused
     std::vector<CheckedSpan> merge_spans_;  //!< merge_following's, reused
-    Profile bell_;                          //!< bell_curved_runs' best, reused
     RingQueue<WindowSegment> segments_;
     RingQueue<WindowRun> runs_;
     RingQueue<TrajectoryPiece> output_;

@@ -116,6 +116,7 @@ std::size_t Lookahead::bell_curved_runs(Profile& profile, const BellExtent& take
     // profiles, which a bell over the taken runs leaves as they are.
     double best_gain_s = 0;
     std::size_t runs = 0;
+    Profile best;
     Profile bell;
     for (const BellExtent* extent : {&widest, &taken}) {
         if (extent == &taken && taken.runs == widest.runs) break;
@@ -126,11 +127,11 @@ std::size_t Lookahead::bell_curved_runs(Profile& profile, const BellExtent& take
         const double gain_s = planned_s - bell.duration_s();
         if (gain_s > best_gain_s + 1e-9 * planned_s) {
             best_gain_s = gain_s;
-            bell_ = bell;
+            best = bell;
             runs = extent->runs;
         }
     }
-    if (runs > 0) profile = bell_;
+    if (runs > 0) profile = best;
     return runs;
 }
 
