@@ -132,13 +132,6 @@ void ChainSmoother::flush() {
     advance();
 }
 
-bool ChainSmoother::pop(Move& out) {
-    if (out_.empty()) return false;
-    out = std::move(out_.front());
-    out_.pop_front();
-    return true;
-}
-
 // Twicing: T = S + K·(P − S) with S = K·P. Where K passes a curve almost unchanged (its
 // response 1 − ε at low frequencies), twicing passes it as 1 − ε²: a circle keeps its radius
 // (K alone pulls every vertex in by about n·h²/(4r)), while the noise of the decimals, at the

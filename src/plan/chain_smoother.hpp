@@ -42,16 +42,14 @@ public:
 
     //! Takes the next move when it is a G1 line that may belong to a chain (XYZ only, blendable
     //! under `tolerance_mm`): the line is held, and the lines that can no longer change become
-    //! available to pop(). A line that does not continue the chain (another tolerance, a corner,
+    //! available through ready(). A line that does not continue the chain (another tolerance, a corner,
     //! not joined) ends it first. False for any other move: the caller ends the chain (flush) and
     //! plans the move itself.
     bool push(const Move& move, double tolerance_mm);
     //! The chain ends here: every held line becomes available.
     void flush();
-    //! The next line, with its end points smoothed, if one is ready.
-    bool pop(Move& out);
-    //! The line pop() would hand out, in place (null when none is ready): valid until
-    //! drop_ready() or the next push() or flush(). Saves copying a move per line.
+    //! The next line, with its end points smoothed, in place (null when none is ready): valid
+    //! until drop_ready() or the next push() or flush(). In place saves copying a move per line.
     [[nodiscard]] const Move* ready() { return out_.empty() ? nullptr : &out_.front(); }
     void drop_ready() { out_.pop_front(); }
     [[nodiscard]] bool holding() const { return !held_.empty() || !out_.empty(); }

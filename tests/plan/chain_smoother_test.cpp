@@ -27,20 +27,27 @@ double distance_to_polyline(const AxisVector& p, const std::vector<Move>& lines)
     return best;
 }
 
+//! The lines ready to leave, taken as the planner takes them (ready, then drop_ready).
+void drain(ChainSmoother& chains, std::vector<Move>& out) {
+    while (const Move* m = chains.ready()) {
+        out.push_back(*m);
+        chains.drop_ready();
+    }
+}
+
 std::vector<Move> smooth(const std::vector<Move>& moves, double tolerance_mm) {
     ChainSmoother chains;
     std::vector<Move> out;
-    Move m;
     for (const Move& move : moves) {
         if (!chains.push(move, tolerance_mm)) {
             chains.flush();
-            while (chains.pop(m)) out.push_back(m);
+            drain(chains, out);
             out.push_back(move);
         }
-        while (chains.pop(m)) out.push_back(m);
+        drain(chains, out);
     }
     chains.flush();
-    while (chains.pop(m)) out.push_back(m);
+    drain(chains, out);
     return out;
 }
 
