@@ -170,8 +170,8 @@ void set_signed_ranges(const std::array<PathPoint, sign_samples>& points, std::s
     c.signs_known = true;
 }
 
-//! A jerk-limited piece's curved axes and its speed with no path acceleration or jerk; no check
-//! (cruise_velocity 0) when more than three axes curve.
+//! A jerk-limited piece's curved axes, its speed limit (feed and axes' speeds) and its speed with
+//! no path acceleration or jerk; no check (both speeds 0) when more than three axes curve.
 PieceCheck piece_check(const PathSegment& path, const DerivativeBounds& b, const MachineConfig& machine,
                        double feed_mm_s) {
     std::array<PathPoint, sign_samples> points;
@@ -183,6 +183,10 @@ PieceCheck piece_check(const PathSegment& path, const DerivativeBounds& b, const
     for (const AxisConfig& axis : machine.axes) {
         const std::size_t i = index(axis.axis);
         if (b.d1[i] > 0) v = std::min(v, axis.max_velocity / b.d1[i]);
+    }
+    check.speed_limit = std::isfinite(v) ? v * (1.0 - 1e-9) : 0.0;
+    for (const AxisConfig& axis : machine.axes) {
+        const std::size_t i = index(axis.axis);
         if (!(b.d2[i] > 0 || b.d3[i] > 0)) {
             if (b.d1[i] > 0) {
                 check.straight_acceleration = std::min(check.straight_acceleration, axis.max_acceleration / b.d1[i]);

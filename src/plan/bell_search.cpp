@@ -93,7 +93,7 @@ double best_with(double distance, double v_start, double v_end, double v_max, co
 }  // namespace
 
 bool fastest_bell(double distance, double v_start, double v_end, const BellSeed& seed,
-                  const std::vector<CheckedSpan>& spans, Profile& out) {
+                  const std::vector<CheckedSpan>& spans, Profile& out, BellRates& rates) {
     if (!any_curved(spans) || !(seed.acceleration > 0) || !(seed.jerk > 0)) return false;
     // Coordinates: acceleration, end jerk, top jerk of the rise, then of the fall.
     using Rates = std::array<double, 6>;
@@ -128,6 +128,14 @@ bool fastest_bell(double distance, double v_start, double v_end, const BellSeed&
     const std::array<Rates, 3> starts = {Rates{ta, tj, tj, ta, tj, tj}, Rates{a, j, j, a, j, j},
                                          Rates{2 * a, 2 * j, j, 2 * a, 2 * j, j}};
     x = starts[0];  // searched from when no start fits
+    // The rates of the last bells taken first: on a chain of like arcs one of them is near the
+    // optimum, and the pattern search then mostly refines it.
+    for (const BellRates& r : seed.recent) {
+        if (!(r.rise.max_acceleration > 0 && r.fall.max_acceleration > 0)) continue;
+        take_if_faster(Rates{r.rise.max_acceleration, r.rise.end_jerk, r.rise.top_jerk, r.fall.max_acceleration,
+                             r.fall.end_jerk, r.fall.top_jerk},
+                       1.0);
+    }
     for (const Rates& start : starts) take_if_faster(start, 1.0);
     // First both sides together (directions 0-2), then each side on its own (3-8).
     for (int stage = 0; stage < 2; ++stage) {
@@ -158,6 +166,7 @@ bool fastest_bell(double distance, double v_start, double v_end, const BellSeed&
             factor = std::sqrt(factor);
         }
     }
+    if (std::isfinite(best_s)) rates = rates_of(x);
     return std::isfinite(best_s);
 }
 

@@ -56,8 +56,7 @@ bool part_fits(const CheckedSpan& span, SignedRange v, SignedRange a, double j) 
         return v.hi <= l.max_velocity && a_top <= l.max_acceleration && j_abs <= l.max_jerk;
     }
     const PieceCheck& check = *span.check;
-    if (v.hi > check.cruise_velocity || a_top > check.straight_acceleration || j_abs > check.straight_jerk)
-        return false;
+    if (v.hi > check.speed_limit || a_top > check.straight_acceleration || j_abs > check.straight_jerk) return false;
     for (int k = 0; k < check.count; ++k) {
         if (!axis_fits(check.axes[static_cast<std::size_t>(k)], v, a, j)) return false;
     }

@@ -42,6 +42,10 @@ struct PieceCheck {
     std::array<CurvedAxis, 3> axes{};
     int count = 0;
     double cruise_velocity = 0;  //!< mm/s
+    //! mm/s, the feed and the axes' speeds alone: the check's speed limit. Above cruise_velocity
+    //! the curved axes' terms decide, with their signs: a path jerk that works against the
+    //! turning (speeding up out of a curve) lets a profile pass faster than it could cruise.
+    double speed_limit = 0;
     //! mm/s², mm/s³: the path acceleration and jerk the axes that move but do not curve allow
     //! (min of amax/d1, jmax/d1; a helix's axis), infinite when none does.
     double straight_acceleration = std::numeric_limits<double>::infinity();
@@ -72,7 +76,7 @@ struct FailedSpan {
 //! and jerk there must keep q''·ṡ² + q'·s̈ within amax and q'''·ṡ³ + 3·q''·ṡ·s̈ + q'·s⃛ within jmax
 //! on every curved axis, in interval arithmetic over the ranges of q', q'', q''' (±d1, ±d2, ±d3
 //! where their signs are unknown; the bounds are taken together, so the test errs on the safe
-//! side), |s̈| and |s⃛| within the straight axes' limits, and v <= cruise_velocity; a span with
+//! side), |s̈| and |s⃛| within the straight axes' limits, and v <= speed_limit; a span with
 //! `limits` and no curved axis keeps v, |s̈| and |s⃛| within them instead. `failed`, when given,
 //! is checked first and set to the span that fails.
 [[nodiscard]] bool profile_keeps_pieces(const Profile& profile, const std::vector<CheckedSpan>& spans,

@@ -17,8 +17,11 @@ constexpr std::size_t curved_commit_ahead = 8;
 //! run of nearly equal limits, which a bell (bell_search.hpp) can only leave at its end; cut
 //! into runs of this many pieces, the bells may start speeding up inside it (on the 100
 //! semicircles at j 5,000: no cut 40.61 s; 16, 12, 10, 8, 6, 4, 2 pieces 40.61, 40.57, 40.45,
-//! 40.12, 40.83, 40.61, 41.43 s).
-constexpr std::size_t transition_run_pieces = 8;
+//! 40.12, 40.83, 40.61, 41.43 s). Since the check lets a speed change pass above the cruise
+//! speed and the quintics at joins of arcs are as wide as P allows: 8, 6, 5, 4, 3, 2 pieces
+//! 39.36, 39.72, 40.70, 39.24, 39.36, 40.62 s. A run boundary at the slowest piece (the middle
+//! of the 32) counts most: the runs' end speeds are their slowest pieces' limits.
+constexpr std::size_t transition_run_pieces = 4;
 
 //! A run's limits are its first segment's, lowered by this factor, and never change: a later
 //! segment joins only when its own limits are at least the run's. Limits that only ever stay

@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "bell_search.hpp"
 #include "cruise_raise.hpp"
 #include "ring_queue.hpp"
 #include "run_merge.hpp"
@@ -153,6 +154,7 @@ private:
     std::size_t window_;
     std::vector<CheckedSpan> spans_;        //!< commit_front's, reused
     std::vector<CheckedSpan> merge_spans_;  //!< merge_following's, reused
+    RecentBellRates recent_bell_rates_{};   //!< bell_search.hpp
     RingQueue<WindowSegment> segments_;
     RingQueue<WindowRun> runs_;
     RingQueue<TrajectoryPiece> output_;

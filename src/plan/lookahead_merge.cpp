@@ -110,28 +110,35 @@ std::size_t Lookahead::merge_following(Profile& profile) {
 
 std::size_t Lookahead::bell_curved_runs(Profile& profile, const BellExtent& taken, const BellExtent& widest,
                                         const MergeRates& rates) {
-    const BellSeed seed{rates.widest.max_acceleration, rates.widest.max_jerk, rates.tightest.max_acceleration,
-                        rates.tightest.max_jerk, rates.widest.max_velocity};
+    const BellSeed seed{rates.widest.max_acceleration, rates.widest.max_jerk,     rates.tightest.max_acceleration,
+                        rates.tightest.max_jerk,       rates.widest.max_velocity, recent_bell_rates_};
     // Against the plan of the widest extent: there the runs after the taken ones keep their own
     // profiles, which a bell over the taken runs leaves as they are.
     double best_gain_s = 0;
     std::size_t runs = 0;
     Profile best;
     Profile bell;
+    BellRates best_rates;
+    BellRates bell_rates;
     for (const BellExtent* extent : {&widest, &taken}) {
         if (extent == &taken && taken.runs == widest.runs) break;
         if (extent->span_count > max_bell_spans) continue;
         merge_spans_.resize(extent->span_count);
-        if (!fastest_bell(extent->length, start_speed_, extent->v_end, seed, merge_spans_, bell)) continue;
+        if (!fastest_bell(extent->length, start_speed_, extent->v_end, seed, merge_spans_, bell, bell_rates)) continue;
         const double planned_s = extent == &taken ? profile.duration_s() : widest.plan_s;
         const double gain_s = planned_s - bell.duration_s();
         if (gain_s > best_gain_s + 1e-9 * planned_s) {
             best_gain_s = gain_s;
             best = bell;
+            best_rates = bell_rates;
             runs = extent->runs;
         }
     }
-    if (runs > 0) profile = best;
+    if (runs > 0) {
+        profile = best;
+        std::rotate(recent_bell_rates_.rbegin(), recent_bell_rates_.rbegin() + 1, recent_bell_rates_.rend());
+        recent_bell_rates_[0] = best_rates;
+    }
     return runs;
 }
 

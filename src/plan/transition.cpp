@@ -23,6 +23,8 @@ constexpr double deviation_target = 0.95;
 constexpr double min_parametric_speed = 0.3;
 constexpr int max_attempts = 48;
 constexpr double min_trim_mm = 1e-7;
+// Bisection steps of widen_quintic.
+constexpr int widen_steps = 8;
 // A ramp transition replaces the single quintic only where its turning speed (ramp_transition.hpp)
 // is higher by this factor: the estimate leaves out the path's own acceleration and jerk and the
 // run boundaries its extra quintics add, so a ramp that is barely faster by it is slower in the
@@ -218,8 +220,64 @@ bool build(const Transition& t, const PathPoint& a, const PathPoint& b, double t
 
 namespace {
 
+//! Sets the trims of `out` and the points its curve runs between (not the curve itself).
+void set_trims(Transition& out, const PathSegment& before, double trim_a, const PathSegment& after, double trim_b) {
+    out.trim_before = trim_a;
+    out.trim_after = trim_b;
+    trim_start_into(out.replaced_before, before, before.length - trim_a);
+    out.replaced_after = after;
+    out.replaced_after.length = trim_b;
+    point_into(out.start, before, before.length - trim_a);
+    point_into(out.end, after, trim_b);
+    out.chained = false;
+}
+
+//! Whether the curvature jumps where `before` meets `after`, an arc on at least one side: by
+//! more than half of the larger curvature (a line into an arc, arcs turning opposite ways, not
+//! two arcs of one circle whose rounded end points leave a kink).
+bool curvature_jumps(const PathSegment& before, const PathSegment& after) {
+    if (before.shape != SegmentShape::arc && after.shape != SegmentShape::arc) return false;
+    const PathPoint a = point_at(before, before.length);
+    const PathPoint b = point_at(after, 0.0);
+    double jump2 = 0;
+    double a2 = 0;
+    double b2 = 0;
+    for (std::size_t i = 0; i < 3; ++i) {
+        jump2 += (a.d2[i] - b.d2[i]) * (a.d2[i] - b.d2[i]);
+        a2 += a.d2[i] * a.d2[i];
+        b2 += b.d2[i] * b.d2[i];
+    }
+    return jump2 > 0.25 * std::max(a2, b2);
+}
+
+//! The trim of `before` for a trim t on both sides: at most its room, and all of it where less
+//! than a sliver would be left.
+double before_trim(const PathSegment& before, double before_room, double t) {
+    const double trim = std::min(t, before_room);
+    return before.length - trim < min_leftover_mm ? before.length : trim;
+}
+
+//! `out` (built with the trim ok_t on both sides, within each side's room) widened towards
+//! failed_t, whose curve left the tolerance, by bisection: the widest trim keeps the curvature's
+//! rate lowest, and under a jerk limit that rate sets the speed at a join of arcs
+//! (docs/planner.md, "The widest trims at joins of arcs").
+void widen_quintic(const PathSegment& before, double before_room, const PathSegment& after, double after_room,
+                   double tolerance_mm, double ok_t, double failed_t, Transition& out) {
+    Transition trial = out;
+    for (int step = 0; step < widen_steps; ++step) {
+        const double t = 0.5 * (ok_t + failed_t);
+        set_trims(trial, before, before_trim(before, before_room, t), after, std::min(t, after_room));
+        if (build(trial, trial.start, trial.end, tolerance_mm, trial.curve, trial.deviation_mm)) {
+            ok_t = t;
+            out = trial;
+        } else {
+            failed_t = t;
+        }
+    }
+}
+
 bool single_quintic(const PathSegment& before, double before_room, const PathSegment& after, double after_room,
-                    double tolerance_mm, Transition& out, const ChainStart* chain) {
+                    double tolerance_mm, Transition& out, const ChainStart* chain, bool widest) {
     if (!(tolerance_mm > 0) || before.shape == SegmentShape::quintic || after.shape == SegmentShape::quintic) {
         return false;
     }
@@ -238,19 +296,12 @@ bool single_quintic(const PathSegment& before, double before_room, const PathSeg
     // the curvature pulse. Taking the whole room lets the transitions meet at the lines' middles
     // with a common curvature (ChainStart). Failing the tolerance, both shrink alike.
     double t = std::max(before_room, after_room);
+    double failed_t = 0;  // the last trim whose curve left the tolerance
     for (int attempt = 0; attempt < max_attempts; ++attempt) {
-        double trim_a = std::min(t, before_room);
-        if (before.length - trim_a < min_leftover_mm) trim_a = before.length;
+        const double trim_a = before_trim(before, before_room, t);
         const double trim_b = std::min(t, after_room);
         if (!(trim_a > min_trim_mm && trim_b > min_trim_mm)) return false;
-        out.trim_before = trim_a;
-        out.trim_after = trim_b;
-        trim_start_into(out.replaced_before, before, before.length - trim_a);
-        out.replaced_after = after;
-        out.replaced_after.length = trim_b;
-        point_into(out.start, before, before.length - trim_a);
-        point_into(out.end, after, trim_b);
-        out.chained = false;
+        set_trims(out, before, trim_a, after, trim_b);
         if (chain != nullptr && trim_a == before.length) {
             // `before` is eaten: start with the curvature of the turn between the outer ends of
             // the two transitions that meet on it (see ChainStart).
@@ -278,7 +329,13 @@ bool single_quintic(const PathSegment& before, double before_room, const PathSeg
                 out.start.d2[i] = own_d2[i];
             }
         }
-        if (build(out, out.start, out.end, tolerance_mm, out.curve, out.deviation_mm)) return true;
+        if (build(out, out.start, out.end, tolerance_mm, out.curve, out.deviation_mm)) {
+            // Under a jerk limit the curve at a join of arcs is as wide as the tolerance allows.
+            if (widest && failed_t > t)
+                widen_quintic(before, before_room, after, after_room, tolerance_mm, t, failed_t, out);
+            return true;
+        }
+        failed_t = t;
         const double target = deviation_target * tolerance_mm;
         const double shrink = out.deviation_mm > target ? 0.9 * target / out.deviation_mm : 0.5;
         t = std::max(trim_a, trim_b) * std::clamp(shrink, 0.05, 0.8);
@@ -290,7 +347,8 @@ bool single_quintic(const PathSegment& before, double before_room, const PathSeg
 
 bool make_transition(const PathSegment& before, double before_room, const PathSegment& after, double after_room,
                      double tolerance_mm, Transition& out, const ChainStart* chain, const TurningLimits* turning) {
-    const bool quintic = single_quintic(before, before_room, after, after_room, tolerance_mm, out, chain);
+    const bool quintic = single_quintic(before, before_room, after, after_room, tolerance_mm, out, chain,
+                                        turning != nullptr && curvature_jumps(before, after));
     out.more.clear();
     if (turning == nullptr || (quintic && out.chained) ||
         (before.shape != SegmentShape::arc && after.shape != SegmentShape::arc)) {

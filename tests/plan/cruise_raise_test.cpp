@@ -18,6 +18,7 @@ PieceCheck tight_piece() {
     check.axes[0] = {1.0, 0.25, 0.0625, 500.0, 50000.0};
     check.count = 1;
     check.cruise_velocity = std::sqrt(500.0 / 0.25) * (1.0 - 1e-9);  // 44.72 mm/s
+    check.speed_limit = 100.0;                                       // the feed
     return check;
 }
 
@@ -42,6 +43,7 @@ TEST(CruiseRaise, RefusesASpeedChangeWhereTheTurningTakesTheAcceleration) {
     // pieces at the speed reached: accepted.
     PieceCheck straight;
     straight.cruise_velocity = 100.0;
+    straight.speed_limit = 100.0;
     std::vector<CheckedSpan> spans = spans_of(straight, 10, 0.5);
     for (const CheckedSpan& s : spans_of(check, 10, 0.5)) spans.push_back(s);
     const Profile early = plan_profile(10.0, 30.0, 30.0, {30.0, 150.0, 20000.0}, ProfileKind::scurve);
@@ -78,6 +80,7 @@ TEST(CruiseRaise, SignsLetThePathJerkWorkAgainstTheTurning) {
     check.axes[0] = {1.0, 0.0, 0.0625, 500.0, 5000.0};
     check.count = 1;
     check.cruise_velocity = 41.0;
+    check.speed_limit = 100.0;
     const double t = 0.002;
     Profile p;
     p.start_velocity = 40.0;
@@ -96,6 +99,43 @@ TEST(CruiseRaise, SignsLetThePathJerkWorkAgainstTheTurning) {
     p.distance = t * 40.0 - 4000.0 * t * t * t / 6.0;
     p.end_velocity = 40.0 - 0.5 * 4000.0 * t * t;
     EXPECT_FALSE(profile_keeps_pieces(p, {{p.distance, &check}}));
+}
+
+TEST(CruiseRaise, SpeedingUpOutOfACurvePassesFasterThanItCouldCruise) {
+    // The tangent axis of a circle of radius 4 mm at 5,000 mm/s³: holding a speed it allows
+    // cbrt(5,000 · 16) = 43.09 mm/s (q'''·v³ alone). Speeding up through 44 mm/s with s⃛ =
+    // +2,000: -0.0625 · 44³ + 2,000 = -3,324 on the axis, within the limit. The check takes the
+    // signed terms, not the cruise speed, and only the feed caps the speed outright.
+    PieceCheck check;
+    check.axes[0] = {1.0, 0.0, 0.0625, 500.0, 5000.0};
+    check.axes[0].signs_known = true;
+    check.axes[0].q1 = {0.999, 1.0};
+    check.axes[0].q2 = {0.0, 0.0};
+    check.axes[0].q3 = {-0.0625, -0.062};
+    check.count = 1;
+    check.cruise_velocity = std::cbrt(5000.0 / 0.0625) * (1.0 - 1e-9);
+    check.speed_limit = 100.0;
+    const double t = 0.002;
+    const auto at_44 = [t](double jerk) {
+        Profile p;
+        p.start_velocity = 44.0;
+        p.phases[0] = {t, jerk, 0.0};
+        p.phase_count = 1;
+        p.distance = t * 44.0 + jerk * t * t * t / 6.0;
+        p.end_velocity = 44.0 + 0.5 * jerk * t * t;
+        return p;
+    };
+    const Profile speeding_up = at_44(2000.0);
+    ASSERT_GT(speeding_up.start_velocity, check.cruise_velocity);
+    EXPECT_TRUE(profile_keeps_pieces(speeding_up, {{speeding_up.distance, &check}}));
+    // Holding 44 mm/s, or braking through it, the turning's jerk alone is over the limit.
+    const Profile holding = at_44(0.0);
+    EXPECT_FALSE(profile_keeps_pieces(holding, {{holding.distance, &check}}));
+    const Profile braking = at_44(-2000.0);
+    EXPECT_FALSE(profile_keeps_pieces(braking, {{braking.distance, &check}}));
+    // The feed does cap it.
+    check.speed_limit = 43.0;
+    EXPECT_FALSE(profile_keeps_pieces(speeding_up, {{speeding_up.distance, &check}}));
 }
 
 }  // namespace

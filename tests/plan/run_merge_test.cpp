@@ -178,6 +178,7 @@ TEST(RunMerge, MergedProfileRefusedWhereACurvedPieceCannotTakeIt) {
     tight.axes[0] = {1.0, 0.5, 0.0, 500.0, 5000.0};
     tight.count = 1;
     tight.cruise_velocity = 31.6;
+    tight.speed_limit = 100.0;
     const PieceCheck none;
     std::vector<CheckedSpan> spans{{20.0, &none, &line}, {2.0, &tight, nullptr}, {20.0, &none, &line}};
     MergeRates rates{line, line};
