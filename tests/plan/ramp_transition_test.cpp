@@ -235,7 +235,7 @@ TEST(RampTransition, TwentySemicirclesPlanWithinTheirMeasuredTime) {
     const double cycle_s = plan.trajectory.duration_s();
     RecordProperty("cycle_time_s", std::to_string(cycle_s));
     EXPECT_LT(cycle_s, 5.65);  // 5.593 s with the quintics as wide as P allows and bells
-    EXPECT_GT(cycle_s, 5.5);  // the 26.377 s reference's pace for 20 of 100: about 5.28 s
+    EXPECT_GT(cycle_s, 5.5);   // the 26.377 s reference's pace for 20 of 100: about 5.28 s
 
     // At 5,000 mm/s³ the arcs' speed rises and falls between the slow joins: 9.275 s with one
     // S-curve per stretch (one jerk, held at the top), 8.105 s with bells (docs/planner.md,
