@@ -24,6 +24,17 @@ struct PieceBounds {
     double v = 0;  //!< mm/s, the speed limit being chosen
 };
 
+//! The speed the feed and the axes' speeds allow on a segment with bounds b (d1·v <= vmax on
+//! every axis), before any curvature term.
+double feed_and_axes_speed(const DerivativeBounds& b, const MachineConfig& machine, double feed_mm_s) {
+    double v = feed_mm_s / b.speed_factor;
+    for (const AxisConfig& axis : machine.axes) {
+        const std::size_t i = index(axis.axis);
+        if (b.d1[i] > 0) v = std::min(v, axis.max_velocity / b.d1[i]);
+    }
+    return v;
+}
+
 //! The path acceleration piece `p` allows at speed v: min over axes of (amax − d2·v²)/d1.
 double acceleration_at(const PieceBounds& p, const MachineConfig& machine, double v) {
     double a = inf;
@@ -115,11 +126,7 @@ bool knee_fits(double d1, double d2, double d3, double v_top, double a, double j
 //! S-curve's knee allows it (knee_fits).
 double jerk_limited_speed(const DerivativeBounds& b, const MachineConfig& machine, double feed_mm_s, double a,
                           double j) {
-    double v = feed_mm_s / b.speed_factor;
-    for (const AxisConfig& axis : machine.axes) {
-        const std::size_t i = index(axis.axis);
-        if (b.d1[i] > 0) v = std::min(v, axis.max_velocity / b.d1[i]);
-    }
+    double v = feed_and_axes_speed(b, machine, feed_mm_s);
     for (const AxisConfig& axis : machine.axes) {
         const std::size_t i = index(axis.axis);
         if (!(b.d2[i] > 0 || b.d3[i] > 0)) continue;
@@ -179,11 +186,7 @@ PieceCheck piece_check(const PathSegment& path, const DerivativeBounds& b, const
         points[static_cast<std::size_t>(k)] = point_at(path, path.length * k / (sign_samples - 1));
     }
     PieceCheck check;
-    double v = feed_mm_s / b.speed_factor;
-    for (const AxisConfig& axis : machine.axes) {
-        const std::size_t i = index(axis.axis);
-        if (b.d1[i] > 0) v = std::min(v, axis.max_velocity / b.d1[i]);
-    }
+    double v = feed_and_axes_speed(b, machine, feed_mm_s);
     check.speed_limit = std::isfinite(v) ? v * (1.0 - 1e-9) : 0.0;
     for (const AxisConfig& axis : machine.axes) {
         const std::size_t i = index(axis.axis);
@@ -207,11 +210,7 @@ PieceCheck piece_check(const PathSegment& path, const DerivativeBounds& b, const
 
 bool curvature_matters(const PathSegment& arc, const MachineConfig& machine, double feed_mm_s) {
     const DerivativeBounds b = derivative_bounds(arc);
-    double v = feed_mm_s / b.speed_factor;
-    for (const AxisConfig& axis : machine.axes) {
-        const std::size_t i = index(axis.axis);
-        if (b.d1[i] > 0) v = std::min(v, axis.max_velocity / b.d1[i]);
-    }
+    const double v = feed_and_axes_speed(b, machine, feed_mm_s);
     for (const AxisConfig& axis : machine.axes) {
         const std::size_t i = index(axis.axis);
         if (b.d2[i] * v * v > split_normal_share * axis.max_acceleration) return true;
@@ -274,11 +273,7 @@ bool split_jerk_limited(const PathSegment& segment, int n, const MachineConfig& 
     // Only where the curvature sets the speed: the whole segment's limits are below the feed and
     // the axes' speeds (else it runs at the feed whole, and keeps more acceleration).
     const DerivativeBounds whole = derivative_bounds(segment);
-    double cruise = feed_mm_s / whole.speed_factor;
-    for (const AxisConfig& axis : machine.axes) {
-        const std::size_t i = index(axis.axis);
-        if (whole.d1[i] > 0) cruise = std::min(cruise, axis.max_velocity / whole.d1[i]);
-    }
+    const double cruise = feed_and_axes_speed(whole, machine, feed_mm_s);
     const ProfileLimits as_one = segment_limits(segment, machine, feed_mm_s, ProfileKind::scurve);
     if (!(as_one.max_velocity < cruise * (1.0 - 1e-9))) return false;
     // One path acceleration and jerk for the whole segment, so that its pieces share S-curve

@@ -98,6 +98,10 @@ bool fastest_bell(double distance, double v_start, double v_end, const BellSeed&
     // Coordinates: acceleration, end jerk, top jerk of the rise, then of the fall.
     using Rates = std::array<double, 6>;
     const auto rates_of = [](const Rates& p) { return BellRates{{p[0], p[1], p[2]}, {p[3], p[4], p[5]}}; };
+    const auto coordinates_of = [](const BellRates& r) {
+        return Rates{r.rise.max_acceleration, r.rise.end_jerk, r.rise.top_jerk,
+                     r.fall.max_acceleration, r.fall.end_jerk, r.fall.top_jerk};
+    };
     double top_hint = 0;
     FailedSpan failed;  // shared by all candidates: most fail where the one before did
     Rates x{};
@@ -132,9 +136,7 @@ bool fastest_bell(double distance, double v_start, double v_end, const BellSeed&
     // optimum, and the pattern search then mostly refines it.
     for (const BellRates& r : seed.recent) {
         if (!(r.rise.max_acceleration > 0 && r.fall.max_acceleration > 0)) continue;
-        take_if_faster(Rates{r.rise.max_acceleration, r.rise.end_jerk, r.rise.top_jerk, r.fall.max_acceleration,
-                             r.fall.end_jerk, r.fall.top_jerk},
-                       1.0);
+        take_if_faster(coordinates_of(r), 1.0);
     }
     for (const Rates& start : starts) take_if_faster(start, 1.0);
     // First both sides together (directions 0-2), then each side on its own (3-8).

@@ -41,7 +41,7 @@ struct BellSeed {
 //! Measured on the 100 semicircles at j 5,000 (cycle, planning time of the whole program):
 //! 30/45 40.12 s in 0.68 s, 40/60 39.98 s in 0.74 s, 60/90 39.97 s in 1.05 s; the slot at F6000
 //! 1.893, 1.888, 1.885 s. Since the check lets a speed change pass above the cruise speed, with
-//! the recent bells as starts: 60/40 39.342 s in 0.56 s, 100/60 39.242 s in 0.77 s, 150/100
+//! the recent bells as starts: 40/60 39.342 s in 0.56 s, 60/100 39.242 s in 0.77 s, 100/150
 //! 39.243 s in 0.80 s; the slot 1.895, 1.892, 1.892 s.
 inline constexpr int max_bell_rates = 100;
 inline constexpr int max_bell_rates_together = 60;
